@@ -1,0 +1,24 @@
+// hinge/reference/errors.hpp: the exceptions the library throws. Every message names what is wrong and
+// where (file and line, face, edge or hinge), so that a command can print it as it is.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace hinge {
+
+// Input that cannot be evaluated: an unreadable or malformed file, a non-manifold or inconsistently
+// oriented mesh, a degenerate triangle or hinge, a non-finite coordinate.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Input that is valid but whose result cannot be given: an energy that is infinite at the current
+// angle (tan at theta = +-pi), or an exact result outside the range of the output type.
+class DomainError : public std::domain_error {
+ public:
+  using std::domain_error::domain_error;
+};
+
+}  // namespace hinge

@@ -1,0 +1,63 @@
+// hinge/reference/evaluate_impl.hpp: definitions of the templates declared in evaluate.hpp. Included by
+// the explicit-instantiation units (src/instantiate_*.cpp) and by users instantiating other scalars.
+#pragma once
+
+#include <string>
+
+#include "hinge/reference/errors.hpp"
+#include "hinge/reference/evaluate.hpp"
+#include "hinge/reference/predicates.hpp"
+
+namespace hinge::reference {
+
+namespace detail {
+inline Point point(const std::array<double, 12>& x, int v) { return {x[3 * v], x[3 * v + 1], x[3 * v + 2]}; }
+}  // namespace detail
+
+template <HingeScalar Scalar>
+PreparedHinge<Scalar> prepare_hinge(const std::array<double, 12>& x) {
+  static const char* const names[12] = {"x0.x", "x0.y", "x0.z", "x1.x", "x1.y", "x1.z",
+                                        "x2.x", "x2.y", "x2.z", "x3.x", "x3.y", "x3.z"};
+  for (int i = 0; i < 12; ++i)
+    if (!std::isfinite(x[i])) throw InputError(std::string("coordinate ") + names[i] + " is not finite");
+  const Point x0 = detail::point(x, 0), x1 = detail::point(x, 1), x2 = detail::point(x, 2), x3 = detail::point(x, 3);
+  if (x1 == x2) throw InputError("degenerate hinge: the hinge edge has zero length (x1 == x2)");
+  if (zero_area_exact(x0, x1, x2)) throw InputError("degenerate hinge: the upper triangle (x0, x1, x2) has zero area");
+  if (zero_area_exact(x3, x2, x1)) throw InputError("degenerate hinge: the lower triangle (x3, x2, x1) has zero area");
+
+  PreparedHinge<Scalar> p;
+  p.sign = static_cast<ExactSign>(hinge_orientation_exact(x0, x1, x2, x3));
+  if constexpr (std::is_floating_point_v<Scalar>) {
+    // Power-of-two scaling (see evaluate.hpp). Differences are taken in long double (exact when the two
+    // exponents are within 11 binades; no overflow), then scaled exactly.
+    long double largest = 0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < a; ++b)
+        for (int c = 0; c < 3; ++c)
+          largest = std::max(largest, std::fabs(static_cast<long double>(x[3 * a + c]) - x[3 * b + c]));
+    p.exponent = std::ilogb(largest);
+    // The stencil of a built-in type is computed one format wider (float in double, double in long
+    // double) and rounded once, quantity by quantity: eq. (6) adds upper- and lower-triangle terms that
+    // nearly cancel on near-folded hinges, which multiplies the few-unit errors of n, m_i and h_i
+    // computed in Scalar itself (measured: 17 units of 2^-53 in the double Hessian, 3.9 with the
+    // stencil rounded once). See docs/numerics.md.
+    using Wide = std::conditional_t<std::same_as<Scalar, float>, double, long double>;
+    auto diff = [&x, e = p.exponent](int a, int b) {
+      Vec3<Wide> d;
+      for (int c = 0; c < 3; ++c)
+        d[c] = static_cast<Wide>(std::ldexp(static_cast<long double>(x[3 * a + c]) - x[3 * b + c], -e));
+      return d;
+    };
+    p.stencil = round_to<Scalar>(make_stencil(HingeEdges<Wide>{diff(2, 1), diff(0, 2), diff(1, 0), diff(3, 2), diff(1, 3)}));
+  } else {
+    p.stencil = make_stencil(hinge_edges<Scalar>(x));
+  }
+  return p;
+}
+
+template <HingeScalar Scalar>
+ThetaDerivatives<Scalar> theta_derivatives(const std::array<double, 12>& x, bool with_hessian) {
+  return theta_derivatives(prepare_hinge<Scalar>(x), with_hessian);
+}
+
+}  // namespace hinge::reference

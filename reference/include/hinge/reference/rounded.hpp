@@ -1,0 +1,36 @@
+// hinge/reference/rounded.hpp: the reference evaluated in a scalar type chosen at run time, every output
+// rounded to the nearest double. This is what `hinge eval --method reference --scalar S`, `hinge
+// oracle` and `hinge hessian --method reference` call; it keeps multiprecision templates out of tools/.
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <array>
+#include <vector>
+
+#include "hinge/reference/assemble.hpp"
+#include "hinge/reference/scalar.hpp"
+
+namespace hinge::reference {
+
+struct RoundedTheta {
+  double theta = 0;
+  std::array<double, 12> grad{};
+  std::array<double, 144> hess{};  // row-major
+};
+
+// theta, grad theta, Hess theta of the hinge `x` in `type`, rounded to double. Throws InputError
+// (degenerate or non-finite input) or DomainError (a result outside the range of double).
+RoundedTheta theta_derivatives_rounded(const ScalarType& type, const std::array<double, 12>& x);
+
+struct RoundedMesh {
+  double energy = 0;
+  std::vector<double> gradient;         // empty unless requested
+  Eigen::SparseMatrix<double> hessian;  // upper triangle; empty unless requested
+};
+
+// rest_state + assemble in `type`, rounded to double. Throws as they do, and DomainError for a result
+// outside the range of double.
+RoundedMesh assemble_rounded(const ScalarType& type, const Mesh& deformed, const Mesh& rest, const Topology& topology,
+                             const EnergyParameters& parameters, unsigned request = want_all);
+
+}  // namespace hinge::reference

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The README's first command: installs the dependencies, builds the release configuration and runs the
+# main job on its built-in defaults (hinge demo).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release --target hinge
+./build/release/tools/hinge demo "$@"

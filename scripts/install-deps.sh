@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages hinge builds and tests with. Idempotent: packages already present are
+# left alone, and the script says which it installs. Works as root or through sudo.
+set -euo pipefail
+
+packages=(
+  cmake g++ make python3        # build driver, compiler, test scripts
+  libeigen3-dev                 # dense 3x3 blocks and the sparse mesh Hessian
+  libboost-dev                  # Boost.Multiprecision: float128, cpp_bin_float, mpfr_float, mpfi_float
+  libmpfr-dev libgmp-dev        # MPFR back end (run-time precision)
+  libmpfi-dev                   # interval arithmetic for the certified oracle
+  libgtest-dev                  # unit tests
+  librapidcheck-dev             # property tests
+  libbenchmark-dev              # benchmarks
+  nlohmann-json3-dev            # JSON Lines input and output
+  libcli11-dev                  # command-line parsing
+  python3-sympy                 # symbolic checks in proofs/
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed: ${packages[*]}"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
+  sudo=sudo
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps: done"

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The README's test command: installs the dependencies, then builds and runs every test twice: a Release
+# build (all labels: unit, properties, proofs, conformance), and an AddressSanitizer +
+# UndefinedBehaviorSanitizer build (unit and properties; a test there checks the flags reached the
+# compiler). Depth of the property tests: HINGE_TEST_DEPTH (quick by default; see docs/testing.md).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+
+echo "== release build and tests"
+cmake --preset release
+cmake --build --preset release
+ctest --preset release
+
+echo "== asan-ubsan build and tests"
+cmake --preset asan-ubsan
+cmake --build --preset asan-ubsan
+ctest --preset asan-ubsan -L 'unit|properties|sanitizers'

@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""The `hinge` command against CONVENTIONS.md: formats, per-line errors, exit statuses, output files.
+
+Usage: test_cli.py HINGE_BINARY SHARED_DIR. Each check is a function test_*; the script runs them all,
+prints one line per check and "N passed, M failed", and exits nonzero if any failed.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+HINGE, SHARED = sys.argv[1], sys.argv[2]
+EXAMPLES = os.path.join(SHARED, "spec", "examples")
+
+
+def run(args, stdin=""):
+    p = subprocess.run([HINGE] + args, input=stdin, capture_output=True, text=True, timeout=120)
+    return p.returncode, p.stdout, p.stderr
+
+
+def lines(text):
+    return [json.loads(l) for l in text.splitlines() if l.strip()]
+
+
+def test_version_names_the_contract():
+    code, out, _ = run(["--version"])
+    assert code == 0 and "contract version 1" in out, out
+
+
+def test_every_command_has_help():
+    for cmd in ["eval", "oracle", "hessian", "conform", "demo"]:
+        code, out, _ = run([cmd, "--help"])
+        assert code == 0 and "--" in out, (cmd, code)
+
+
+def test_oracle_reproduces_the_worked_examples_exactly():
+    with open(os.path.join(EXAMPLES, "eval-input.jsonl")) as f:
+        code, out, _ = run(["oracle"], f.read())
+    assert code == 0
+    want = lines(open(os.path.join(EXAMPLES, "oracle-output.jsonl")).read())
+    got = lines(out)
+    assert [g["id"] for g in got] == [w["id"] for w in want]
+    for g, w in zip(got, want):
+        for k in ("theta", "grad", "hess"):
+            assert g[k] == w[k], (w["id"], k)
+
+
+def test_eval_double_is_within_a_few_units_of_the_oracle():
+    text = open(os.path.join(EXAMPLES, "eval-input.jsonl")).read()
+    got, want = lines(run(["eval"], text)[1]), lines(open(os.path.join(EXAMPLES, "oracle-output.jsonl")).read())
+    for g, w in zip(got, want):
+        num = math.sqrt(sum((a - b) ** 2 for a, b in zip(g["hess"], w["hess"])))
+        den = math.sqrt(sum(b * b for b in w["hess"]))
+        assert num / den <= 8 * 2.0**-53, (w["id"], num / den / 2.0**-53)  # the issue's bound for double
+
+
+def test_numbers_read_back_exactly_and_look_like_doubles():
+    code, out, _ = run(["eval", "--scalar", "float128"], open(os.path.join(EXAMPLES, "eval-input.jsonl")).read())
+    assert code == 0
+    for token in out.replace("[", " ").replace("]", " ").replace(",", " ").split():
+        if token[0] in "-0123456789":
+            mantissa = token.split("e")[0].replace("-", "").replace(".", "").lstrip("0")
+            assert len(mantissa) <= 17 and math.isfinite(float(token)), token  # shortest round trip
+
+
+def test_invalid_lines_get_line_numbers_and_keep_readable_ids():
+    stdin = "\n".join([
+        '{"id": "ok", "x": [0.5,1,0,0,0,0,1,0,0,0.5,-1,0]}',
+        "not json",
+        "",
+        '{"id": "short", "x": [1,2,3]}',
+        '{"id": "degenerate", "x": [0.5,1,0,0,0,0,0,0,0,0.5,-1,0]}',
+        '{"id": "nonfinite", "x": [1e400,1,0,0,0,0,1,0,0,0.5,-1,0]}',
+        '{"x": [0.5,1,0,0,0,0,1,0,0,0.5,-1,0]}',
+    ]) + "\n"
+    code, out, _ = run(["eval"], stdin)
+    assert code == 0
+    got = lines(out)
+    assert len(got) == 6
+    assert got[0]["id"] == "ok" and got[0]["theta"] == 0.0
+    assert got[1] == {"id": None, "line": 2, "error": got[1]["error"]}
+    assert got[2]["id"] == "short" and got[2]["line"] == 4
+    assert got[3]["id"] == "degenerate" and "error" in got[3] and "line" not in got[3]
+    assert got[4]["id"] == "nonfinite" and "error" in got[4]
+    assert got[5]["id"] is None and got[5]["line"] == 7
+
+
+def test_branch_cut_is_plus_pi():
+    x = [0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.25, 2, 0]
+    out = lines(run(["eval"], json.dumps({"id": "folded", "x": x}))[1])
+    assert out[0]["theta"] == math.pi
+
+
+def test_usage_errors_exit_2():
+    assert run(["eval", "--scalar", "quad"])[0] == 2
+    assert run(["eval", "--method", "symbolic"])[0] == 2
+    assert run(["frobnicate"])[0] == 2
+    assert run(["hessian"])[0] == 2  # --mesh is required
+
+
+def two_triangles(path, z=0.25):
+    with open(path, "w") as f:
+        f.write(f"v 0 0 0\nv 1 0 0\nv 0.5 1 {z}\nv 0.5 -1 0\nf 3 1 2\nf 4 2 1\n")
+
+
+def test_hessian_writes_matrix_market_and_gradient():
+    with tempfile.TemporaryDirectory() as d:
+        rest, mesh = os.path.join(d, "rest.obj"), os.path.join(d, "mesh.obj")
+        two_triangles(rest, 0.0)
+        two_triangles(mesh, 0.25)
+        H, G = os.path.join(d, "H.mtx"), os.path.join(d, "G.txt")
+        code, out, err = run(["hessian", "--mesh", mesh, "--rest", rest, "--energy", "tan", "--k", "1",
+                              "--out", H, "--gradient", G])
+        assert code == 0, err
+        assert out.startswith("energy ") and float(out.split()[1]) > 0
+        mm = open(H).read().splitlines()
+        assert mm[0] == "%%MatrixMarket matrix coordinate real symmetric"
+        size = [l for l in mm if not l.startswith("%")][0].split()
+        assert size[0] == size[1] == "12"
+        entries = [l.split() for l in mm if not l.startswith("%")][1:]
+        assert len(entries) == int(size[2]) and all(int(i) >= int(j) for i, j, _ in entries)
+        assert len(open(G).read().split()) == 12
+        assert sorted(os.listdir(d)) == ["G.txt", "H.mtx", "mesh.obj", "rest.obj"]
+
+
+def test_young_poisson_thickness_give_equation_eleven():
+    with tempfile.TemporaryDirectory() as d:
+        rest, mesh = os.path.join(d, "rest.obj"), os.path.join(d, "mesh.obj")
+        two_triangles(rest, 0.0)
+        two_triangles(mesh, 0.25)
+        e1 = run(["hessian", "--mesh", mesh, "--rest", rest, "--energy", "shells", "--k", str(1 / 6)])[1]
+        e2 = run(["hessian", "--mesh", mesh, "--rest", rest, "--energy", "shells",
+                  "--young", "24", "--poisson", "0.5", "--thickness", "0.5"])[1]
+        assert e1 == e2, (e1, e2)
+        assert run(["hessian", "--mesh", mesh, "--energy", "shells", "--k", "1", "--young", "2"])[0] == 2
+
+
+def test_invalid_mesh_exits_1_naming_the_problem_and_leaves_no_file():
+    with tempfile.TemporaryDirectory() as d:
+        bad = os.path.join(d, "bad.obj")
+        with open(bad, "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 1 2 4\n")  # directed edge 1->2 twice
+        H = os.path.join(d, "H.mtx")
+        code, _, err = run(["hessian", "--mesh", bad, "--energy", "tan", "--k", "1", "--out", H])
+        assert code == 1 and "face" in err, err
+        assert os.listdir(d) == ["bad.obj"]
+        with open(bad, "w") as f:
+            f.write("v 0 0 0\nv 1 zero 0\n")
+        code, _, err = run(["hessian", "--mesh", bad, "--energy", "tan", "--k", "1"])
+        assert code == 1 and "bad.obj:2" in err, err
+
+
+def test_threads_and_repeat_do_not_change_output():
+    with tempfile.TemporaryDirectory() as d:
+        rest, mesh = os.path.join(d, "rest.obj"), os.path.join(d, "mesh.obj")
+        two_triangles(rest, 0.0)
+        two_triangles(mesh, 0.25)
+        outs = []
+        for extra in (["--threads", "1"], ["--threads", "2", "--repeat", "3"]):
+            H = os.path.join(d, "H%d.mtx" % len(outs))
+            run(["hessian", "--mesh", mesh, "--rest", rest, "--energy", "tan", "--k", "1", "--out", H] + extra)
+            outs.append(open(H).read())
+        assert outs[0] == outs[1]
+
+
+def main():
+    tests = [(n, f) for n, f in sorted(globals().items()) if n.startswith("test_") and callable(f)]
+    failed = 0
+    for name, f in tests:
+        try:
+            f()
+            print("PASS", name)
+        except Exception as e:  # noqa: BLE001 - report every failure
+            failed += 1
+            print("FAIL", name, repr(e))
+    print(f"{len(tests) - failed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

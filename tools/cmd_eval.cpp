@@ -1,0 +1,32 @@
+// hinge eval [--method M] [--scalar S] [--input FILE] [--output FILE] (CONVENTIONS.md).
+#include "commands.hpp"
+#include "hinge_stream.hpp"
+#include "methods.hpp"
+
+namespace hinge::tools {
+
+Action add_eval(CLI::App& app) {
+  auto* cmd = app.add_subcommand("eval", "Evaluate theta, its gradient and Hessian for hinges given as JSON Lines");
+  struct Options {
+    std::string method = "reference", scalar = "double", input, output;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("--method", o->method, "Evaluation method: reference or fast")->capture_default_str();
+  cmd->add_option("--scalar", o->scalar,
+                  "Scalar type: float, double, long-double, float128, bin128, mpfr:BITS")->capture_default_str();
+  cmd->add_option("--input", o->input, "Input JSON Lines file (default: standard input)");
+  cmd->add_option("--output", o->output, "Output JSON Lines file (default: standard output)");
+  cmd->footer(
+      "Input, one object per line: {\"id\": \"...\", \"x\": [x0.x, x0.y, x0.z, x1.x, ..., x3.z]}.\n"
+      "Output, same order: {\"id\", \"theta\", \"grad\": [12], \"hess\": [144, row-major]}, or {\"id\", \"error\"}.\n"
+      "Every number is printed so that it reads back exactly. Exit: 0 all lines read, 1 I/O failure, 2 usage.");
+  return [cmd, o]() -> int {
+    const ScalarType scalar = parse_scalar_type(o->scalar);  // std::invalid_argument: usage error
+    require_method(o->method);
+    return run_hinge_stream(o->input, o->output,
+                            [&](const std::array<double, 12>& x) { return evaluate_hinge(o->method, scalar, x); },
+                            "eval");
+  };
+}
+
+}  // namespace hinge::tools

@@ -1,0 +1,24 @@
+// hinge hessian --mesh X.obj [--rest R.obj] --energy tan|shells (--k K | --young Y --poisson NU
+// --thickness H) [--method M] [--scalar S] [--out H.mtx] [--gradient G.txt] [--threads N] [--repeat N]
+#include "commands.hpp"
+#include "mesh_job.hpp"
+
+namespace hinge::tools {
+
+Action add_hessian(CLI::App& app) {
+  auto* cmd = app.add_subcommand("hessian", "Bending energy, gradient and Hessian of a whole mesh");
+  struct Options {
+    MeshOptions mesh;
+    std::string method = "reference", scalar = "double";
+  };
+  auto o = std::make_shared<Options>();
+  add_mesh_options(cmd, o->mesh, true);
+  cmd->add_option("--method", o->method, "Evaluation method: reference or fast")->capture_default_str();
+  cmd->add_option("--scalar", o->scalar, "Scalar type: float, double, long-double, float128, bin128, mpfr:BITS")
+      ->capture_default_str();
+  cmd->footer("Prints 'energy <value>'. Exit: 0 done; 1 invalid input (message names file and line, edge or face;\n"
+              "no output file left behind); 2 usage error.");
+  return [o]() { return run_mesh_job(o->mesh, o->method, parse_scalar_type(o->scalar), "hessian"); };
+}
+
+}  // namespace hinge::tools
