@@ -23,5 +23,10 @@ int overflow(int x) {
 }
 
 TEST(Sanitizers, UndefinedBehaviorAborts) {
-  EXPECT_DEATH(overflow(std::numeric_limits<int>::max()), "overflow");
+  EXPECT_DEATH(
+      {
+        volatile int result = overflow(std::numeric_limits<int>::max());  // used, so not optimized away
+        (void)result;
+      },
+      "overflow");
 }
