@@ -1,6 +1,7 @@
 // hinge eval [--method M] [--scalar S] [--input FILE] [--output FILE] (CONVENTIONS.md).
 #include "commands.hpp"
 #include "hinge_stream.hpp"
+#include "jsonl.hpp"
 #include "methods.hpp"
 
 namespace hinge::tools {
@@ -23,9 +24,12 @@ Action add_eval(CLI::App& app) {
   return [cmd, o]() -> int {
     const ScalarType scalar = parse_scalar_type(o->scalar);  // std::invalid_argument: usage error
     require_method(o->method);
-    return run_hinge_stream(o->input, o->output,
-                            [&](const std::array<double, 12>& x) { return evaluate_hinge(o->method, scalar, x); },
-                            "eval");
+    return run_hinge_stream(
+        o->input, o->output,
+        [&](const std::string& id_json, const std::array<double, 12>& x) {
+          return result_line(id_json, evaluate_hinge(o->method, scalar, x));
+        },
+        "eval");
   };
 }
 

@@ -14,7 +14,7 @@
 
 namespace hinge::tools {
 
-int run_hinge_stream(const std::string& input, const std::string& output, const HingeEvaluator& evaluate,
+int run_hinge_stream(const std::string& input, const std::string& output, const HingeLineWriter& write,
                      const std::string& what) {
   std::ifstream file_in;
   std::istream* in = &std::cin;
@@ -43,7 +43,7 @@ int run_hinge_stream(const std::string& input, const std::string& output, const 
       text = invalid_line(line);
     } else {
       try {
-        text = result_line(line.id_json, evaluate(*line.x));
+        text = write(line.id_json, *line.x);
       } catch (const InputError& e) {
         text = error_line(line.id_json, e.what());
       } catch (const DomainError& e) {

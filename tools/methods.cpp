@@ -3,9 +3,13 @@
 
 #include <stdexcept>
 
+#include "hinge/fast/rounded.hpp"
+
 namespace hinge::tools {
 
-std::vector<std::string> method_names() { return {"reference"}; }
+// "fast": hinge::fast (the per-hinge kernel for hinges, Algorithm 2 for meshes), in every scalar type
+// the reference has (float, double, long-double, float128, bin128, mpfr:BITS).
+std::vector<std::string> method_names() { return {"reference", "fast"}; }
 
 void require_method(const std::string& method) {
   std::string known;
@@ -19,11 +23,15 @@ void require_method(const std::string& method) {
 reference::RoundedTheta evaluate_hinge(const std::string& method, const ScalarType& scalar,
                                        const std::array<double, 12>& x) {
   require_method(method);
+  if (method == "fast") return fast::hinge_derivatives_rounded(scalar, x);
   return reference::theta_derivatives_rounded(scalar, x);
 }
 
 reference::RoundedMesh evaluate_mesh(const std::string& method, const ScalarType& scalar, const MeshJob& job) {
   require_method(method);
+  if (method == "fast")
+    return fast::assemble_rounded(scalar, *job.deformed, *job.rest, *job.topology, job.parameters, job.request,
+                                  job.threads);
   return reference::assemble_rounded(scalar, *job.deformed, *job.rest, *job.topology, job.parameters, job.request);
 }
 

@@ -5,9 +5,12 @@
 
 #include <Eigen/SparseCore>
 #include <array>
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "hinge/reference/assemble.hpp"
+#include "hinge/reference/errors.hpp"
 #include "hinge/reference/scalar.hpp"
 
 namespace hinge::reference {
@@ -17,6 +20,25 @@ struct RoundedTheta {
   std::array<double, 12> grad{};
   std::array<double, 144> hess{};  // row-major
 };
+
+// `value` rounded to the nearest double; DomainError ("<what> is outside the range of double") when
+// that is not finite.
+double rounded_to_double(const auto& value, const char* what) {
+  const double d = to_double(value);
+  if (!std::isfinite(d)) throw DomainError(std::string(what) + " is outside the range of double");
+  return d;
+}
+
+// theta, grad theta (12) and Hess theta (12 x 12, any matrix with hess(i, j)) rounded to double.
+template <class Scalar, class Grad, class Hess>
+RoundedTheta round_theta(const Scalar& theta, const Grad& grad, const Hess& hess) {
+  RoundedTheta r;
+  r.theta = rounded_to_double(theta, "theta");
+  for (int i = 0; i < 12; ++i) r.grad[i] = rounded_to_double(grad[i], "the gradient");
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) r.hess[12 * i + j] = rounded_to_double(hess(i, j), "the Hessian");
+  return r;
+}
 
 // theta, grad theta, Hess theta of the hinge `x` in `type`, rounded to double. Throws InputError
 // (degenerate or non-finite input) or DomainError (a result outside the range of double).

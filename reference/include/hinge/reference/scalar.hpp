@@ -12,6 +12,7 @@
 #include <cmath>
 #include <concepts>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -47,6 +48,22 @@ struct ScalarType {
 // Parses "float", "double", "long-double", "float128", "bin128", "mpfr:BITS" (2 <= BITS <= 1000000);
 // throws std::invalid_argument with the list of valid names otherwise.
 ScalarType parse_scalar_type(std::string_view name);
+
+// Calls f.template operator()<Scalar>() with the Scalar that `type` names (MPFR's precision set first)
+// and returns its result: how a run-time choice of scalar type reaches the templates.
+template <class F>
+decltype(auto) visit_scalar_type(const ScalarType& type, F&& f) {
+  using K = ScalarType::Kind;
+  switch (type.kind) {
+    case K::kind_float: return f.template operator()<float>();
+    case K::kind_double: return f.template operator()<double>();
+    case K::kind_long_double: return f.template operator()<long double>();
+    case K::kind_float128: return f.template operator()<float128>();
+    case K::kind_bin128: return f.template operator()<bin128>();
+    case K::kind_mpfr: set_mpfr_bits(type.mpfr_bits); return f.template operator()<mpfr>();
+  }
+  throw std::invalid_argument("unknown scalar type");
+}
 
 // The name of Scalar as on the command line.
 template <HingeScalar Scalar>

@@ -61,12 +61,28 @@ HingeEdges<Scalar> hinge_edges(const std::array<Vec3<Scalar>, 4>& x) {
   return {x[2] - x[1], x[0] - x[2], x[1] - x[0], x[3] - x[2], x[1] - x[3]};
 }
 
-// a b - c d with an error of at most 2 units of roundoff of the result for float and double (Kahan's
-// algorithm with a hardware fused multiply-add; Jeannerod, Louvet & Muller, Math. Comp. 82, 2013),
-// plainly in the other types (long double's fma is emulated in software, and slow). The components of
-// a cross product are such differences and cancel in needle and obtuse triangles; this keeps N to a
-// few units where the stencil is computed in double (the float reference's stencil, and users calling
-// make_stencil<double> directly).
+// a b exactly, as p + e with p = fl(a b) (Dekker's product with Veltkamp's split into two halves of 32
+// bits; Dekker, Numer. Math. 18, 1971). For long double, whose fused multiply-add is emulated in glibc
+// (fmal saves and restores the floating-point environment: about 40 times slower than these 17
+// operations). Exact barring overflow and underflow of the products.
+inline void exact_product(long double a, long double b, long double& p, long double& e) {
+  constexpr long double split = 4294967297.0L;  // 2^32 + 1: long double has a 64-bit significand
+  const long double ca = split * a, a_hi = ca - (ca - a), a_lo = a - a_hi;
+  const long double cb = split * b, b_hi = cb - (cb - b), b_lo = b - b_hi;
+  p = a * b;
+  e = ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo;
+}
+
+// a b - c d to a few units of roundoff of the result, also where the two products nearly cancel: in
+// float and double by Kahan's algorithm with the hardware fused multiply-add (at most 2 units; Jeannerod,
+// Louvet & Muller, Math. Comp. 82, 2013); in long double from the two exact products, (p1 - p2) + (e1 -
+// e2) (the algorithm of Cornea, Harrison & Tang, 2002: a few units; p1 - p2 is exact where it cancels,
+// by Sterbenz's lemma); plainly in the
+// multiprecision types. The components of a cross product are such differences and cancel in needle
+// and obtuse triangles; this keeps N to a few units where the stencil is computed in long double (the
+// double reference's stencil) or double (the float reference's). Without it a needle's N carried a
+// relative error ~kappa_shape 2^-64 that the cancellation of N0 + N~0 on near-flat hinges amplified to
+// no correct digit (docs/testing.md, Findings 1).
 template <class Scalar>
 Scalar difference_of_products(const Scalar& a, const Scalar& b, const Scalar& c, const Scalar& d) {
   if constexpr (std::same_as<Scalar, float> || std::same_as<Scalar, double>) {
@@ -74,6 +90,11 @@ Scalar difference_of_products(const Scalar& a, const Scalar& b, const Scalar& c,
     const Scalar cd = c * d;
     const Scalar error = fma(-c, d, cd);  // cd - c d exactly
     return fma(a, b, -cd) + error;
+  } else if constexpr (std::same_as<Scalar, long double>) {
+    long double p1, e1, p2, e2;
+    exact_product(a, b, p1, e1);
+    exact_product(c, d, p2, e2);
+    return (p1 - p2) + (e1 - e2);
   } else {
     return a * b - c * d;
   }

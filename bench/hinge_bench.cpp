@@ -1,0 +1,239 @@
+// Google Benchmark programs for hinge::fast against hinge::reference (bench/README.md):
+//   hinge/{fast,reference}                 one hinge: theta, grad theta, Hess theta (double)
+//   mesh/{fast,reference}/n:N/threads:T    a whole n x n cloth: energy, gradient and Hessian (tan energy),
+//                                          rest state precomputed, the pattern built once (fast)
+//   pattern/n:N                            building the fast pattern (once per topology)
+// After the runs a summary prints ns per hinge and per interior edge, the ratio fast / reference, the
+// two-thread speedup and the exponent k of t = a n^k fitted by least squares in log-log (the paper's
+// section 7.3), n the number of vertices.
+//
+// Environment: HINGE_BENCH_MAX (largest grid side, default 1001: 10^6 vertices), HINGE_BENCH_REFERENCE_MAX
+// (largest side for the reference, default 201: it builds 78 triplets per hinge).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cloth.hpp"
+#include "hinge/fast/assemble.hpp"
+#include "hinge/fast/hinge_kernel.hpp"
+#include "hinge/reference/assemble.hpp"
+#include "hinge/reference/evaluate.hpp"
+
+namespace hinge::bench {
+namespace {
+
+int env_int(const char* name, int fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::atoi(v) : fallback;
+}
+
+// ---- one hinge ---------------------------------------------------------------------------------------
+
+const std::vector<std::array<double, 12>>& bench_hinges() {
+  static const auto h = hinges(1024, 7);
+  return h;
+}
+
+void hinge_fast(benchmark::State& state) {
+  const auto& hs = bench_hinges();
+  for (auto _ : state)
+    for (const auto& x : hs) {
+      auto d = fast::hinge_derivatives<double>(x);
+      benchmark::DoNotOptimize(d);
+    }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+}
+
+void hinge_reference(benchmark::State& state) {
+  const auto& hs = bench_hinges();
+  for (auto _ : state)
+    for (const auto& x : hs) {
+      auto d = reference::theta_derivatives<double>(x);
+      benchmark::DoNotOptimize(d);
+    }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+}
+
+// ---- a whole cloth -----------------------------------------------------------------------------------
+
+// One grid at a time (the largest needs about 1.3 GB with its Hessian): rebuilt when the size changes.
+struct Cloth {
+  int n = 0;
+  Mesh rest, deformed;
+  Topology topology;
+  std::unique_ptr<fast::Assembler<double>> assembler;
+  std::vector<reference::HingeCoefficients<double>> coefficients;
+  reference::MeshDerivatives<double> out;
+};
+Cloth& cloth_of(int n) {
+  static Cloth c;
+  if (c.n != n) {
+    c.assembler.reset();
+    c.out = {};
+    c.n = n;
+    c.rest = cloth(n, 1);
+    c.deformed = cloth(n, 2);
+    c.topology = build_topology(c.rest);
+    c.assembler = std::make_unique<fast::Assembler<double>>(c.topology);
+    c.coefficients = c.assembler->rest_state(c.rest, {reference::Model::tan, 1.0, 0}, 2);
+  }
+  return c;
+}
+
+void mesh_fast(benchmark::State& state) {
+  Cloth& c = cloth_of(static_cast<int>(state.range(0)));
+  const int threads = static_cast<int>(state.range(1));
+  for (auto _ : state) {
+    c.assembler->evaluate(c.deformed, c.coefficients, reference::Model::tan, reference::want_all, threads, c.out);
+    benchmark::DoNotOptimize(c.out.energy);
+  }
+  state.counters["edges"] = static_cast<double>(c.topology.hinges.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.topology.hinges.size()));
+}
+
+void mesh_reference(benchmark::State& state) {
+  Cloth& c = cloth_of(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    auto m = reference::assemble<double>(c.deformed, c.topology, c.coefficients, reference::Model::tan);
+    benchmark::DoNotOptimize(m.energy);
+  }
+  state.counters["edges"] = static_cast<double>(c.topology.hinges.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.topology.hinges.size()));
+}
+
+void pattern_build(benchmark::State& state) {
+  Cloth& c = cloth_of(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    fast::Pattern p(c.topology);
+    benchmark::DoNotOptimize(p.nonzeros());
+  }
+  state.counters["edges"] = static_cast<double>(c.topology.hinges.size());
+}
+
+// ---- summary -------------------------------------------------------------------------------------------
+
+// Keeps each run's real time per iteration (seconds) over the repetitions and reports their median
+// (this machine is shared and noisy: the median, not the best or the mean), with the item count.
+class Capture : public benchmark::ConsoleReporter {
+ public:
+  struct Result {
+    double seconds = 0;  // median over repetitions
+    double items = 0;    // per iteration
+  };
+  std::map<std::string, std::vector<double>> times;
+  std::map<std::string, double> items;
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& r : runs) {
+      if (r.run_type != Run::RT_Iteration || r.error_occurred) continue;
+      times[r.benchmark_name()].push_back(r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit));
+      const auto it = r.counters.find("edges");
+      items[r.benchmark_name()] = it != r.counters.end() ? double(it->second) : 1024;
+    }
+    ConsoleReporter::ReportRuns(runs);
+  }
+  std::optional<Result> get(const std::string& name) const {
+    const auto it = times.find(name);
+    if (it == times.end()) return std::nullopt;
+    std::vector<double> t = it->second;
+    std::sort(t.begin(), t.end());
+    const std::size_t m = t.size() / 2;
+    const double median = t.size() % 2 ? t[m] : (t[m - 1] + t[m]) / 2;
+    return Result{median, items.at(name)};
+  }
+};
+
+// Least-squares slope of log t against log n.
+double fitted_exponent(const std::vector<std::pair<double, double>>& points) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const auto& [n, t] : points) {
+    const double x = std::log(n), y = std::log(t);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double m = static_cast<double>(points.size());
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+std::string mesh_name(const char* method, int n, int threads) {
+  return std::string("mesh/") + method + "/n:" + std::to_string(n) + "/threads:" + std::to_string(threads) + "/real_time";
+}
+
+void summary(const Capture& c, const std::vector<int>& sides) {
+  std::printf("\n== summary (double; real time per iteration, median over repetitions) ==\n");
+  const auto hf = c.get("hinge/fast"), hr = c.get("hinge/reference");
+  if (hf && hr)
+    std::printf("per hinge: fast %.1f ns, reference %.1f ns, fast/reference %.3f\n", 1e9 * hf->seconds / 1024,
+                1e9 * hr->seconds / 1024, hf->seconds / hr->seconds);
+  std::printf("%7s %10s %10s %14s %14s %9s %14s %14s\n", "side", "vertices", "edges", "fast 1T ns/e", "fast 2T ns/e",
+              "speedup", "ref ns/edge", "fast/ref");
+  std::vector<std::pair<double, double>> fit_all, fit_large, fit_paper, fit_ref;
+  for (int n : sides) {
+    const auto f1 = c.get(mesh_name("fast", n, 1)), f2 = c.get(mesh_name("fast", n, 2)),
+               r = c.get(mesh_name("reference", n, 1));
+    if (!f1) continue;
+    const double vertices = double(n) * n, edges = f1->items;
+    std::printf("%7d %10.0f %10.0f %14.1f", n, vertices, edges, 1e9 * f1->seconds / edges);
+    if (f2) std::printf(" %14.1f %9.2f", 1e9 * f2->seconds / edges, f1->seconds / f2->seconds);
+    else std::printf(" %14s %9s", "-", "-");
+    if (r) std::printf(" %14.1f %14.3f\n", 1e9 * r->seconds / edges, f1->seconds / r->seconds);
+    else std::printf(" %14s %14s\n", "-", "-");
+    fit_all.emplace_back(vertices, f1->seconds);
+    if (n >= 101) fit_large.emplace_back(vertices, f1->seconds);
+    if (n <= 81) fit_paper.emplace_back(vertices, f1->seconds);
+    if (r) fit_ref.emplace_back(vertices, r->seconds);
+  }
+  if (fit_large.size() >= 2)
+    std::printf("fast, 1 thread: t = a n^k with k = %.3f (101^2 .. %d^2 vertices)\n", fitted_exponent(fit_large),
+                sides.back());
+  if (fit_paper.size() >= 2)
+    std::printf("fast, 1 thread: k = %.3f over the paper's sizes (11^2 .. 81^2)\n", fitted_exponent(fit_paper));
+  if (fit_all.size() >= 2) std::printf("fast, 1 thread: k = %.3f over all sizes\n", fitted_exponent(fit_all));
+  if (fit_ref.size() >= 2) std::printf("reference: k = %.3f over its sizes\n", fitted_exponent(fit_ref));
+}
+
+}  // namespace
+}  // namespace hinge::bench
+
+int main(int argc, char** argv) {
+  using namespace hinge::bench;
+  const int largest = env_int("HINGE_BENCH_MAX", 1001), reference_largest = env_int("HINGE_BENCH_REFERENCE_MAX", 201);
+  std::vector<int> sides;
+  for (int n : {11, 21, 41, 81, 101, 201, 401, 1001})
+    if (n <= largest) sides.push_back(n);
+  if (largest > 1001) sides.push_back(largest);
+
+  benchmark::RegisterBenchmark("hinge/fast", hinge_fast);
+  benchmark::RegisterBenchmark("hinge/reference", hinge_reference);
+  for (int n : sides) {
+    benchmark::RegisterBenchmark("pattern", pattern_build)->ArgNames({"n"})->Args({n})->Unit(benchmark::kMillisecond);
+    for (int threads : {1, 2})
+      benchmark::RegisterBenchmark("mesh/fast", mesh_fast)
+          ->ArgNames({"n", "threads"})
+          ->Args({n, threads})
+          ->UseRealTime()
+          ->Unit(benchmark::kMillisecond);
+    if (n <= reference_largest)
+      benchmark::RegisterBenchmark("mesh/reference", mesh_reference)
+          ->ArgNames({"n", "threads"})
+          ->Args({n, 1})
+          ->UseRealTime()
+          ->Unit(benchmark::kMillisecond);
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  Capture capture;
+  benchmark::RunSpecifiedBenchmarks(&capture);
+  summary(capture, sides);
+  benchmark::Shutdown();
+  return 0;
+}

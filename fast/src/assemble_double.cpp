@@ -1,0 +1,44 @@
+// Algorithm 2's hot passes in double (hinge/fast/assemble.hpp), compiled for the baseline x86-64 and for
+// x86-64-v3 and chosen at run time (dispatch.hpp); the same bits either way.
+#include "hinge/fast/assemble.hpp"
+#include "hinge/fast/dispatch.hpp"
+
+namespace hinge::fast::detail {
+namespace {
+
+HINGE_FAST_TARGET_V3 void faces_v3(const Mesh& mesh, const Pattern& pattern, std::size_t begin, std::size_t end,
+                                   std::array<double, 4>* face, char* suspect) {
+  face_pass_body<double>(mesh, pattern, begin, end, face, suspect);
+}
+void faces_baseline(const Mesh& mesh, const Pattern& pattern, std::size_t begin, std::size_t end,
+                    std::array<double, 4>* face, char* suspect) {
+  face_pass_body<double>(mesh, pattern, begin, end, face, suspect);
+}
+HINGE_FAST_TARGET_V3 void assembly_v3(const Mesh& mesh, const Pattern& pattern, const std::array<double, 4>* face,
+                                      const double* psi1, const double* psi2, AssemblyRange r, AssemblyFlags flags,
+                                      double* values, double* gradient) {
+  assembly_pass_body<double>(mesh, pattern, face, psi1, psi2, r, flags, values, gradient);
+}
+void assembly_baseline(const Mesh& mesh, const Pattern& pattern, const std::array<double, 4>* face, const double* psi1,
+                       const double* psi2, AssemblyRange r, AssemblyFlags flags, double* values, double* gradient) {
+  assembly_pass_body<double>(mesh, pattern, face, psi1, psi2, r, flags, values, gradient);
+}
+
+}  // namespace
+
+template <>
+void Kernels<double>::faces(const Mesh& mesh, const Pattern& pattern, std::size_t begin, std::size_t end,
+                            std::array<double, 4>* face, char* suspect) {
+  static const auto kernel = has_x86_64_v3() ? faces_v3 : faces_baseline;
+  kernel(mesh, pattern, begin, end, face, suspect);
+}
+
+template <>
+void Kernels<double>::assembly(const Mesh& mesh, const Pattern& pattern, const std::array<double, 4>* face,
+                               const double* psi1, const double* psi2, AssemblyRange r, AssemblyFlags flags,
+                               double* values, double* gradient) {
+  static const auto kernel = has_x86_64_v3() ? assembly_v3 : assembly_baseline;
+  kernel(mesh, pattern, face, psi1, psi2, r, flags, values, gradient);
+}
+
+}  // namespace hinge::fast::detail

@@ -1,0 +1,56 @@
+// hinge/oracle/oracle.hpp: the certified oracle for one hinge. Every output is the double nearest to the
+// exact theta, grad theta (eq. 4) and Hess theta (eqs. 5-6, errata applied) of the 12 input doubles
+// taken as exact, with a proof carried by interval arithmetic:
+//
+// 1. exact stage (exact.hpp): edges, normals, dot and cross products in integers; validity checks, the
+//    sign of theta, and every exactly-zero output decided there, exactly;
+// 2. certification (Ziv's strategy): each output is enclosed by MPFI at `start_bits`, and the precision
+//    doubled until both end points of its enclosure round to the same double, up to `max_bits`. A
+//    gradient or Hessian entry is the square root of a rational, so once its enclosure rounds to two
+//    adjacent doubles, the side of their midpoint it lies on is decided exactly in integers (an exact
+//    midpoint is rounded to even): these never reach the cap. theta is transcendental unless zero
+//    (Lindemann), so it is never a tie; an output left undecided at `max_bits` (in practice only theta
+//    within 2^-max_bits of a midpoint) is reported in `uncertified` with its enclosure, never silently
+//    rounded.
+//
+// Variables: x0, x1, x2, x3 (12); gradient 12, Hessian 144 row-major (CONVENTIONS.md).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "hinge/oracle/exact.hpp"
+
+namespace hinge::oracle {
+
+struct Options {
+  unsigned start_bits = 128;  // first working precision
+  unsigned max_bits = 4096;   // the precision cap (documented in oracle/README.md)
+};
+
+// An output the oracle could not certify within Options::max_bits.
+struct Uncertified {
+  std::string output;        // "theta", "grad[3]", "hess[17]"
+  std::string lower, upper;  // the enclosure at the cap, in decimal, rounded outward
+  double nearest = 0;        // the double nearest to the enclosure's midpoint (the value printed)
+};
+
+struct CertifiedTheta {
+  double theta = 0;
+  std::array<double, 12> grad{};
+  std::array<double, 144> hess{};  // row-major
+  unsigned bits = 0;               // largest working precision the certification needed
+  std::size_t exact_bits = 0;      // size of the largest integer of the exact stage
+  unsigned ties = 0;               // outputs exactly halfway between two doubles (rounded to even)
+  unsigned decided_exactly = 0;    // outputs whose enclosure straddled a midpoint, decided in integers
+  std::vector<Uncertified> uncertified;
+};
+
+// Throws hinge::InputError (non-finite or degenerate input, the reference's messages) or
+// hinge::DomainError (an exact output outside the range of double).
+CertifiedTheta certified_theta_derivatives(const std::array<double, 12>& x, const Options& options = {});
+CertifiedTheta certify(const ExactHinge& exact, const Options& options = {});
+
+}  // namespace hinge::oracle

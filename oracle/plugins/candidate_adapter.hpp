@@ -1,0 +1,32 @@
+// The part every one of the project's conformance plugins shares (hinge/candidate.h): copy the 12
+// coordinates in, the results out, and turn an exception (a degenerate or non-finite hinge) into the
+// "cannot evaluate" return value.
+#pragma once
+
+#include <array>
+#include <exception>
+
+#include "hinge/candidate.h"
+
+namespace hinge::plugins {
+
+// `evaluate(x)` returns the hinge's derivatives; `theta_of(d)` picks theta from them (the reference
+// and the fast kernel name it differently); d.grad[i] and d.hess(i, j) are read as doubles.
+template <class Evaluate, class ThetaOf>
+int call_candidate(const double x[12], double* theta, double grad[12], double hess[144], Evaluate evaluate,
+                   ThetaOf theta_of) {
+  try {
+    std::array<double, 12> in;
+    for (int i = 0; i < 12; ++i) in[i] = x[i];
+    const auto d = evaluate(in);
+    *theta = theta_of(d);
+    for (int i = 0; i < 12; ++i) grad[i] = d.grad[i];
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j) hess[12 * i + j] = d.hess(i, j);  // row-major
+    return 0;
+  } catch (const std::exception&) {
+    return 1;
+  }
+}
+
+}  // namespace hinge::plugins

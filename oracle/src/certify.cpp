@@ -1,0 +1,246 @@
+// Certification of one hinge's outputs (hinge/oracle/oracle.hpp): Ziv's strategy on MPFI enclosures of
+// the exact form (exact.hpp), with exact detection of zeros and of ties.
+//
+// Why an enclosure that rounds to one double certifies the output: rounding to nearest is monotone, so
+// if both end points of an interval containing v round to the same double d, every point of it does,
+// v included; d is the double nearest to v (the tie rule only matters at a midpoint, which the integer
+// test below decides exactly).
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "hinge/oracle/oracle.hpp"
+#include "hinge/reference/errors.hpp"
+#include "hinge_intervals.hpp"
+#include "interval.hpp"
+
+namespace hinge::oracle {
+
+namespace detail {
+
+std::string to_decimal_rounded(mpfr_srcptr x, mpfr_rnd_t rnd) {
+  if (mpfr_zero_p(x)) return "0";
+  if (mpfr_nan_p(x)) return "nan";
+  if (mpfr_inf_p(x)) return mpfr_sgn(x) > 0 ? "inf" : "-inf";
+  mpfr_exp_t e = 0;
+  char* digits = mpfr_get_str(nullptr, &e, 10, 40, x, rnd);
+  std::string s(digits);
+  mpfr_free_str(digits);
+  const bool negative = s[0] == '-';
+  if (negative) s.erase(0, 1);
+  std::string out = negative ? "-" : "";
+  out += s.substr(0, 1) + "." + s.substr(1) + "e" + std::to_string(static_cast<long>(e) - 1);
+  return out;
+}
+
+std::string to_decimal(mpfr_srcptr x) { return to_decimal_rounded(x, MPFR_RNDN); }
+
+Interval quotient(const Int& num, const Int& den, const Interval& root, long shift) {
+  if (sgn(num) == 0) return Interval::zero();
+  return scale2(Interval(num) / (Interval(den) * root), shift);
+}
+
+Angle angle(const ExactHinge& e, const Interval& l0) {
+  Angle a;
+  const int ys = sgn(e.Y), xs = sgn(e.X);
+  if (ys == 0) {
+    // N x Nt is parallel to e0, so Y = 0 means N parallel to Nt: X = +-|N| |Nt| is not zero.
+    if (xs == 0) throw std::logic_error("hinge oracle: X = Y = 0 on a non-degenerate hinge");
+    if (xs > 0) {
+      a.theta = Interval::zero();
+      a.tan_half = Interval::zero();
+      a.exactly_zero = true;
+    } else {
+      a.theta = Interval::pi();  // the branch cut: theta = +pi, never -pi (CONVENTIONS.md)
+      a.branch_cut = true;
+    }
+    return a;
+  }
+  const Interval r = sqrt(Interval(Int(e.nn * e.tt)));  // |N| |Nt|
+  const Interval X(e.X), Y(e.Y);
+  a.tan_half = xs > 0 ? Interval(Y / (l0 * (r + X))) : Interval(l0 * (r - X) / Y);  // eq. (12)
+  a.theta = 2 * atan(a.tan_half);
+  return a;
+}
+
+Rounding round_enclosure(const Interval& v) {
+  const mpfr_prec_t p = mpfi_get_prec(v.get());
+  Real lo(p), hi(p);
+  mpfi_get_left(lo.get(), v.get());
+  mpfi_get_right(hi.get(), v.get());
+  Rounding r;
+  if (mpfr_nan_p(lo.get()) || mpfr_nan_p(hi.get())) return r;
+  r.lo = mpfr_get_d(lo.get(), MPFR_RNDN);
+  r.hi = mpfr_get_d(hi.get(), MPFR_RNDN);
+  if (r.lo != r.hi) return r;  // -0.0 == +0.0: an enclosure within [-2^-1075, 2^-1075] rounds to zero
+  if (std::isinf(r.lo)) {
+    r.verdict = Verdict::overflow;
+    return r;
+  }
+  r.verdict = Verdict::rounded;
+  r.value = r.lo + r.hi == 0 ? (std::signbit(r.lo) && std::signbit(r.hi) ? -0.0 : 0.0) : r.lo;
+  // A point enclosure (an exactly computed value) may itself be a midpoint, which mpfr_get_d has
+  // rounded to even: note it.
+  if (mpfr_equal_p(lo.get(), hi.get()) && std::isfinite(r.value) && mpfr_cmp_d(lo.get(), r.value) != 0) {
+    Real twice_gap(p + 64);
+    mpfr_sub_d(twice_gap.get(), lo.get(), r.value, MPFR_RNDN);  // exact at this precision
+    mpfr_mul_2ui(twice_gap.get(), twice_gap.get(), 1, MPFR_RNDN);
+    const double toward = std::nextafter(r.value, mpfr_sgn(twice_gap.get()) > 0 ? HUGE_VAL : -HUGE_VAL);
+    r.tie = std::isfinite(toward) && mpfr_cmp_d(twice_gap.get(), toward - r.value) == 0;
+  }
+  return r;
+}
+
+Uncertified flag(const std::string& name, const Interval& v) {
+  const mpfr_prec_t p = mpfi_get_prec(v.get());
+  Real lo(p), hi(p), mid(p + 1);
+  mpfi_get_left(lo.get(), v.get());
+  mpfi_get_right(hi.get(), v.get());
+  mpfi_mid(mid.get(), v.get());
+  return {name, detail::to_decimal_rounded(lo.get(), MPFR_RNDD), detail::to_decimal_rounded(hi.get(), MPFR_RNDU),
+          mpfr_get_d(mid.get(), MPFR_RNDN)};
+}
+
+bool same_angle(const ExactHinge& a, const ExactHinge& b) {
+  if (sgn(a.Y) != sgn(b.Y) || sgn(a.X) != sgn(b.X)) return false;
+  return a.X * a.X * b.nn * b.tt == b.X * b.X * a.nn * a.tt;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::Interval;
+using detail::Real;
+using detail::Rounding;
+using detail::Verdict;
+
+// The rounding of v = num 2^shift / (den sqrt(s)) decided exactly, when its enclosure rounds to two
+// adjacent doubles a < b: every point of the enclosure rounds to a or b, and the only boundary between
+// them is their midpoint m, so the sign of v - m decides, and v = m is a tie (rounded to even). With
+// v and m of one sign, |v| <> |m| is  num^2 2^(2 shift) <> m^2 den^2 s  in integers. Returns false when
+// a and b are not adjacent (the enclosure is still too wide). The pair (DBL_MAX, inf) is adjacent too:
+// its boundary 2^1024 - 2^970 is where rounding overflows; `overflow` is set above it.
+bool exact_round(const Int& num, const Int& den, const Int& s, long shift, double a, double b, double& out,
+                 bool& tie, bool& overflow) {
+  constexpr double largest = std::numeric_limits<double>::max();
+  Real m(64);
+  if (std::isfinite(a) && std::isfinite(b) && std::nextafter(a, HUGE_VAL) == b) {
+    mpfr_set_d(m.get(), a, MPFR_RNDN);
+    mpfr_add_d(m.get(), m.get(), b, MPFR_RNDN);  // exact: two adjacent doubles sum to at most 55 bits
+    mpfr_div_2ui(m.get(), m.get(), 1, MPFR_RNDN);
+  } else if ((a == largest && b == HUGE_VAL) || (a == -HUGE_VAL && b == -largest)) {
+    mpfr_set_d(m.get(), largest, MPFR_RNDN);
+    mpfr_add_d(m.get(), m.get(), 0x1p970, MPFR_RNDN);  // 2^1024 - 2^970, exact at 64 bits
+    if (a < 0) mpfr_neg(m.get(), m.get(), MPFR_RNDN);
+  } else {
+    return false;
+  }
+  // m != 0: a midpoint of two adjacent doubles never is.
+  Int M;
+  const long q = mpfr_get_z_2exp(M.get_mpz_t(), m.get());  // m = M 2^q
+  const int v_sign = sgn(num) * sgn(den);
+  int v_minus_m;  // sign of v - m
+  if (v_sign != sgn(M)) {
+    v_minus_m = v_sign;  // opposite sides of zero
+  } else {
+    Int lhs = num * num, rhs = M * M * den * den * s;  // |v| <> |m|, both scaled by (den sqrt(s) 2^-shift)^2
+    const long t = 2 * shift - 2 * q;
+    if (t >= 0) lhs <<= static_cast<mp_bitcnt_t>(t);
+    else rhs <<= static_cast<mp_bitcnt_t>(-t);
+    v_minus_m = cmp(lhs, rhs) * v_sign;
+    if (v_minus_m > 0) v_minus_m = 1;
+    if (v_minus_m < 0) v_minus_m = -1;
+  }
+  tie = v_minus_m == 0;
+  out = v_minus_m < 0 ? a : v_minus_m > 0 ? b : mpfr_get_d(m.get(), MPFR_RNDN);  // ties to even
+  overflow = std::isinf(out);
+  return true;
+}
+
+std::string output_name(int k) {
+  if (k == 0) return "theta";
+  if (k <= 12) return "grad[" + std::to_string(k - 1) + "]";
+  return "hess[" + std::to_string(k - 13) + "]";
+}
+
+}  // namespace
+
+CertifiedTheta certify(const ExactHinge& e, const Options& options) {
+  if (!e.has_hessian) throw std::invalid_argument("certify: the exact hinge was computed without its Hessian");
+  constexpr int count = 1 + 12 + 144;
+  CertifiedTheta out;
+  out.exact_bits = e.max_bits();
+  std::array<bool, count> done{};
+  std::array<double, count> value{};
+  int remaining = count;
+  auto settle = [&](int k, double v) {
+    done[k] = true;
+    value[k] = v;
+    --remaining;
+  };
+  // Exactly zero outputs need no precision at all.
+  for (int k = 0; k < 12; ++k)
+    if (sgn(e.g[k]) == 0) settle(1 + k, 0.0);
+  for (int k = 0; k < 144; ++k)
+    if (sgn(e.h[k]) == 0) settle(13 + k, 0.0);
+  if (sgn(e.Y) == 0 && sgn(e.X) > 0) settle(0, 0.0);
+
+  const unsigned cap = std::max(options.max_bits, options.start_bits);
+  for (unsigned bits = std::max(53u, options.start_bits); remaining > 0; bits *= 2) {
+    if (bits > cap) bits = cap;
+    out.bits = bits;
+    detail::WorkingPrecision precision(bits);
+    const Interval l0 = sqrt(Interval(e.s));
+    const Interval g_scale = Interval(e.g_den) * l0, h_scale = Interval(e.h_den) * l0;
+    std::array<Interval, count> enclosure;
+    for (int k = 0; k < count; ++k) {
+      if (done[k]) continue;
+      const bool is_grad = k >= 1 && k <= 12;
+      const Int* num = k == 0 ? nullptr : is_grad ? &e.g[k - 1] : &e.h[k - 13];
+      const Int& den = is_grad ? e.g_den : e.h_den;
+      const long shift = is_grad ? e.F : 2 * e.F;
+      if (k == 0) enclosure[k] = detail::angle(e, l0).theta;
+      else enclosure[k] = scale2(Interval(*num) / (is_grad ? g_scale : h_scale), shift);
+      const Rounding r = detail::round_enclosure(enclosure[k]);
+      if (r.verdict == Verdict::overflow)
+        throw DomainError(std::string(k == 0 ? "theta" : is_grad ? "the gradient" : "the Hessian") +
+                          " is outside the range of double");
+      if (r.verdict == Verdict::rounded) {
+        settle(k, r.value);
+        if (r.tie) ++out.ties;
+        continue;
+      }
+      // grad and Hess entries are square roots of rationals: rounding them is decidable exactly.
+      double rounded = 0;
+      bool tie = false, overflow = false;
+      if (k > 0 && exact_round(*num, den, e.s, shift, r.lo, r.hi, rounded, tie, overflow)) {
+        if (overflow) throw DomainError(std::string(is_grad ? "the gradient" : "the Hessian") + " is outside the range of double");
+        settle(k, rounded);
+        if (tie) ++out.ties;
+        ++out.decided_exactly;
+      }
+    }
+    if (remaining > 0 && bits >= cap) {
+      for (int k = 0; k < count; ++k)
+        if (!done[k]) {
+          out.uncertified.push_back(detail::flag(output_name(k), enclosure[k]));
+          value[k] = out.uncertified.back().nearest;
+        }
+      break;
+    }
+  }
+  out.theta = value[0];
+  for (int k = 0; k < 12; ++k) out.grad[k] = value[1 + k];
+  for (int k = 0; k < 144; ++k) out.hess[k] = value[13 + k];
+  return out;
+}
+
+CertifiedTheta certified_theta_derivatives(const std::array<double, 12>& x, const Options& options) {
+  return certify(exact_hinge(x, true), options);
+}
+
+}  // namespace hinge::oracle

@@ -1,0 +1,350 @@
+// The per-hinge kernel (hinge/fast/hinge_kernel.hpp): against an independent high-precision evaluation
+// (hinge::reference in MPFR at 256 bits), against hinge::reference in the same scalar type, the check
+// values and branch cut of CONVENTIONS.md, exact validity decisions with the reference's messages, and
+// exact power-of-two scaling. Errors in units of the type's unit roundoff (tests/support/tolerance.hpp).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fast_support.hpp"
+#include "hinge/fast/hinge_kernel.hpp"
+#include "hinge/reference/evaluate.hpp"
+#include "support/hinges.hpp"
+#include "support/tolerance.hpp"
+
+namespace hinge::fast {
+namespace {
+
+using reference::ThetaDerivatives;
+
+ThetaDerivatives<mpfr> exact(const std::array<double, 12>& x) {
+  set_mpfr_bits(256);
+  return reference::theta_derivatives<mpfr>(x);
+}
+
+TEST(HingeKernel, CheckValuesOfTheConventions) {
+  const auto x = test::flat_hinge();
+  const HingeDerivatives<double> d = hinge_derivatives<double>(x);
+  EXPECT_EQ(d.theta, 0.0);
+  EXPECT_FALSE(d.on_branch_cut);
+  // d theta / d x0 = -n / h0 = (0, 0, -1) (eq. 4), exactly: every quantity here is exact in double.
+  EXPECT_EQ(d.grad[0], 0.0);
+  EXPECT_EQ(d.grad[1], 0.0);
+  EXPECT_EQ(d.grad[2], -1.0);
+  auto lifted = x;
+  lifted[2] = 0.25;  // x0 along +n: theta negative
+  EXPECT_LT(hinge_derivatives<double>(lifted).theta, 0.0);
+}
+
+TEST(HingeKernel, DoubleMatchesMpfr256OnWellShapedHinges) {
+  // The bounds for the fast kernel: worst 4, median 2 units of 2^-53, normwise, in the Hessian.
+  // The gradient and theta are formed from the same once-rounded quantities with two or three more
+  // roundings each: 4 units as well (measured worst 2.9 and 3.1 on 2000 hinges).
+  const auto hinges = test::well_shaped_hinges(test::cases(400), 21);
+  std::vector<double> errors;
+  double worst_grad = 0, worst_theta = 0;
+  for (const auto& x : hinges) {
+    const HingeDerivatives<double> d = hinge_derivatives<double>(x);
+    const ThetaDerivatives<mpfr> e = exact(x);
+    const double h = test::normwise_units(d.hess, e.hess, 0x1p-53);
+    const double g = test::normwise_units(d.grad, e.grad, 0x1p-53);
+    const double t = std::fabs(d.theta - to_double(e.angle.theta)) / std::fabs(to_double(e.angle.theta)) / 0x1p-53;
+    errors.push_back(h);
+    worst_grad = std::max(worst_grad, g);
+    worst_theta = std::max(worst_theta, t);
+    EXPECT_LE(h, 4) << test::describe(x);
+    EXPECT_LE(g, 4) << test::describe(x);
+    EXPECT_LE(t, 4) << test::describe(x);
+  }
+  std::sort(errors.begin(), errors.end());
+  EXPECT_LE(errors[errors.size() / 2], 2) << "median Hessian error, units of 2^-53";
+  RecordProperty("worst_hessian_units", std::to_string(errors.back()));
+  RecordProperty("median_hessian_units", std::to_string(errors[errors.size() / 2]));
+}
+
+template <class Scalar>
+class FastScalarTypes : public ::testing::Test {};
+using Types = ::testing::Types<float, long double, float128, bin128, mpfr>;
+TYPED_TEST_SUITE(FastScalarTypes, Types);
+
+TYPED_TEST(FastScalarTypes, MatchesMpfr256InItsOwnUnits) {
+  using Scalar = TypeParam;
+  // float: the quantities are computed in double and rounded once (as for double: bound 8 units, measured
+  // worst 2.3). The other types compute them in their own format (no wider type at hand), where
+  // near-folded hinges amplify their errors several fold: 32 units (measured worst 10), the bound the
+  // reference's own test uses for them.
+  const double bound = std::same_as<Scalar, float> ? 8 : 32;
+  for (const auto& x : test::well_shaped_hinges(test::cases(40), 22)) {
+    if constexpr (std::same_as<Scalar, mpfr>) set_mpfr_bits(113);
+    const HingeDerivatives<Scalar> d = hinge_derivatives<Scalar>(x);
+    const double u = test::unit_roundoff_double<Scalar>();
+    const ThetaDerivatives<mpfr> e = exact(x);
+    EXPECT_LE(test::normwise_units(d.hess, e.hess, u), bound) << scalar_name<Scalar>() << " " << test::describe(x);
+    EXPECT_LE(test::normwise_units(d.grad, e.grad, u), bound) << scalar_name<Scalar>() << " " << test::describe(x);
+  }
+}
+
+TEST(HingeKernel, Bin128MatchesReferenceBin128) {
+  // Same scalar type, independent formulas (q_j and a_j here, eq. 6 block by block there): each within
+  // 32 units of 2^-113 of the exact values (previous test and the reference's), so 64 apart.
+  for (const auto& x : test::well_shaped_hinges(test::cases(40), 23)) {
+    const HingeDerivatives<bin128> f = hinge_derivatives<bin128>(x);
+    const ThetaDerivatives<bin128> r = reference::theta_derivatives<bin128>(x);
+    const double u = test::unit_roundoff_double<bin128>();
+    EXPECT_LE(test::normwise_units(f.hess, r.hess, u), 64) << test::describe(x);
+    EXPECT_LE(test::normwise_units(f.grad, r.grad, u), 64) << test::describe(x);
+  }
+}
+
+TEST(HingeKernel, FoldedFlatIsPlusPiExactly) {
+  // x3 == x0: the two faces coincide, folded onto each other (CONVENTIONS.md: theta = +pi, never -pi).
+  const std::array<double, 12> folded{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, 1, 0};
+  for (const auto& x : {folded, std::array<double, 12>{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.25, 2, 0}}) {
+    const HingeDerivatives<double> d = hinge_derivatives<double>(x);
+    EXPECT_EQ(d.theta, std::numbers::pi);
+    EXPECT_TRUE(d.on_branch_cut);
+    const HingeDerivatives<bin128> q = hinge_derivatives<bin128>(x);
+    EXPECT_TRUE(q.on_branch_cut);
+    EXPECT_EQ(to_double(q.theta), std::numbers::pi);
+  }
+  // Slightly off the cut on either side: theta near +pi or near -pi, decided exactly.
+  auto above = folded, below = folded;
+  above[11] = 0x1p-40;
+  below[11] = -0x1p-40;
+  const double ta = hinge_derivatives<double>(above).theta, tb = hinge_derivatives<double>(below).theta;
+  EXPECT_GT(std::fabs(ta), 3.14);
+  EXPECT_GT(std::fabs(tb), 3.14);
+  EXPECT_EQ(std::signbit(ta), !std::signbit(tb));
+  EXPECT_EQ(std::signbit(ta), std::signbit(to_double(exact(above).angle.theta)));
+}
+
+std::string input_error(auto&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEST(HingeKernel, DegenerateHingesAreErrorsWithTheReferenceMessages) {
+  std::vector<std::array<double, 12>> bad = {
+      {0.5, 1, 0, 1, 0, 0, 1, 0, 0, 0.5, -1, 0},           // x1 == x2
+      {0, 0, 0, 1, 0, 0, 2, 0, 0, 0.5, -1, 0},             // upper collinear
+      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 3, 0, 0},              // lower collinear
+      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, NAN, 0},          // not finite
+      {0.1, 0.1 + 0x1p-52, 0, 0, 0, 0, 1, 1, 0, 0.5, -1, 0}};  // upper nearly collinear: fine
+  for (const auto& x : bad) {
+    const std::string f = input_error([&] { hinge_derivatives<double>(x); });
+    const std::string r = input_error([&] { reference::theta_derivatives<double>(x); });
+    EXPECT_EQ(f, r) << test::describe(x);
+    EXPECT_EQ(input_error([&] { hinge_derivatives<bin128>(x); }), r) << test::describe(x);
+  }
+}
+
+TEST(HingeKernel, PowerOfTwoScalingIsExact) {
+  // theta is invariant under x -> 2^k x, grad theta scales by 2^-k and Hess theta by 2^-2k; the kernel
+  // scales internally by powers of two only, so the results are exactly those of the unscaled hinge.
+  for (const auto& x : test::well_shaped_hinges(20, 24)) {
+    const HingeDerivatives<double> d = hinge_derivatives<double>(x);
+    for (int k : {-700, -250, 250, 700}) {
+      std::array<double, 12> y;
+      for (int i = 0; i < 12; ++i) y[i] = std::ldexp(x[i], k);
+      const HingeDerivatives<double> s = hinge_derivatives<double>(y);
+      EXPECT_EQ(s.theta, d.theta) << k;
+      for (int i = 0; i < 12; ++i) EXPECT_EQ(s.grad[i], std::ldexp(d.grad[i], -k)) << k;
+      for (int i = 0; i < 144; ++i) EXPECT_EQ(s.hess.data()[i], std::ldexp(d.hess.data()[i], -2 * k)) << k;
+    }
+  }
+}
+
+TEST(HingeKernel, HessianIsExactlySymmetricAndGradientSumsToZero) {
+  for (const auto& x : test::well_shaped_hinges(50, 25)) {
+    const HingeDerivatives<double> d = hinge_derivatives<double>(x);
+    EXPECT_EQ(d.hess, d.hess.transpose());
+    // Translation null space: the four vertex gradients cancel up to the roundings of their terms.
+    const Eigen::Vector3d sum = d.grad.segment<3>(0) + d.grad.segment<3>(3) + d.grad.segment<3>(6) + d.grad.segment<3>(9);
+    EXPECT_LE(sum.norm(), 8 * 0x1p-53 * d.grad.norm()) << test::describe(x);
+  }
+}
+
+// ---- ranges: docs/testing.md findings 2 and 3, extreme shapes, extreme scales ----------------------
+
+ThetaDerivatives<mpfr> exact_with_bits(const std::array<double, 12>& x, unsigned bits) {
+  set_mpfr_bits(bits);
+  return reference::theta_derivatives<mpfr>(x);
+}
+
+template <class Scalar>
+bool all_finite(const HingeDerivatives<Scalar>& d) {
+  using std::isfinite;
+  if (!isfinite(d.theta)) return false;
+  for (const Scalar& v : d.grad) if (!isfinite(v)) return false;
+  for (const Scalar& v : d.hess.reshaped()) if (!isfinite(v)) return false;
+  return true;
+}
+
+// x times 2^k, when every coordinate scales exactly (no overflow, no subnormal).
+std::optional<std::array<double, 12>> scaled_exactly(const std::array<double, 12>& x, int k) {
+  std::array<double, 12> y;
+  for (int i = 0; i < 12; ++i) {
+    y[i] = std::ldexp(x[i], k);
+    if (!std::isfinite(y[i]) || std::ldexp(y[i], -k) != x[i]) return std::nullopt;
+  }
+  return y;
+}
+
+// theta unchanged, grad times 2^-k, Hess times 2^-2k, bit for bit (also where that overflows or underflows).
+void expect_scaled_exactly(const HingeDerivatives<double>& d, const HingeDerivatives<double>& s, int k,
+                           const std::array<double, 12>& x) {
+  EXPECT_EQ(s.theta, d.theta) << k << " " << test::describe(x);
+  for (int i = 0; i < 12; ++i) EXPECT_EQ(s.grad[i], std::ldexp(d.grad[i], -k)) << k << " " << test::describe(x);
+  for (int i = 0; i < 144; ++i)
+    EXPECT_EQ(s.hess.data()[i], std::ldexp(d.hess.data()[i], -2 * k)) << k << " " << test::describe(x);
+}
+
+// docs/testing.md, finding 2: a hinge edge 5e-12 times the longest edge, at the size where the kernel
+// stops rescaling (largest difference near 2^-200). 1 / (l_0^3 2A) overflowed; r_0 = m_0 / l_0^2 does not.
+const std::array<double, 12> kFinding2{0, -7.7836328544510523e-73, 3.1134531417804208e-61, 0, 0, 0, 0,
+                                       1.5567265708902105e-72, 0, 1.5560780158936893e-62, -7.7836328544510523e-73,
+                                       -3.1095621360807212e-61};
+// docs/testing.md, finding 3: kappa_shape 2e11 (a short hinge edge), theta = -0.05.
+const std::array<double, 12> kFinding3{0, -2.4545467326488632e-103, 9.8181869305954537e-92, 0, 0, 0, 0,
+                                       4.9090934652977265e-103, 0, 4.9070482653539194e-93, -2.4545467326488632e-103,
+                                       -9.8059167535386641e-92};
+
+TEST(HingeKernel, ShortHingeEdgeAtTheRescalingThresholdIsFiniteAndAccurate) {
+  const HingeDerivatives<double> d = hinge_derivatives<double>(kFinding2);
+  ASSERT_TRUE(all_finite(d)) << test::describe(kFinding2);
+  const ThetaDerivatives<mpfr> e = exact(kFinding2);
+  // The fast kernel's class on hard hinges (tolerance.hpp, fast_units_per_kappa<double>): c kappa_shape,
+  // c = 4: the summaries rounded once, eq. (6) amplifying their errors by up to kappa_shape.
+  const double bound = 4 * test::shape_condition_number(kFinding2);
+  EXPECT_LE(test::normwise_units(d.hess, e.hess, 0x1p-53), bound);
+  EXPECT_LE(test::normwise_units(d.grad, e.grad, 0x1p-53), bound);
+  RecordProperty("hessian_units", std::to_string(test::normwise_units(d.hess, e.hess, 0x1p-53)));
+  RecordProperty("gradient_units", std::to_string(test::normwise_units(d.grad, e.grad, 0x1p-53)));
+  // Scaled so that the largest edge component lies on either side of 2^-200 (rescaled or not): the
+  // same results, scaled exactly.
+  for (int k = -4; k <= 4; ++k) {
+    const auto y = scaled_exactly(kFinding2, k);
+    ASSERT_TRUE(y);
+    const HingeDerivatives<double> s = hinge_derivatives<double>(*y);
+    ASSERT_TRUE(all_finite(s)) << k;
+    expect_scaled_exactly(d, s, k, kFinding2);
+  }
+}
+
+TEST(HingeKernel, Bin128ShortHingeEdgeKeepsItsDigits) {
+  const HingeDerivatives<bin128> d = hinge_derivatives<bin128>(kFinding3);
+  ASSERT_TRUE(all_finite(d));
+  const ThetaDerivatives<mpfr> e = exact(kFinding3);
+  const double u = test::unit_roundoff_double<bin128>();
+  const double g = test::normwise_units(d.grad, e.grad, u), h = test::normwise_units(d.hess, e.hess, u);
+  RecordProperty("gradient_units", std::to_string(g));
+  RecordProperty("hessian_units", std::to_string(h));
+  // The property suite's bound for bin128 (tolerance.hpp): 12 kappa. The law of cosines gave 1.8e22
+  // units in the gradient here (kappa_shape^2 u: its cancellation times the gradient's own condition).
+  const double kappa = test::condition_number(kFinding3);
+  EXPECT_LE(g, 12 * kappa);
+  EXPECT_LE(h, 12 * kappa);
+  // Stronger, for this hinge: its edge lies along an axis, so e_0 . e_i, e_2 x e_0 and e_0 x C have one
+  // product per component (exact up to one rounding): the stencil is within a few units, and eq. (6)
+  // amplifies that by at most kappa_angle = 1 / sin(0.05) = 20 in the Hessian. 32 units, the bound of
+  // well-shaped hinges (MatchesMpfr256InItsOwnUnits), times 20 for the Hessian.
+  EXPECT_LE(g, 32);
+  EXPECT_LE(h, 32 * 20);
+}
+
+// Shapes far beyond the double-double path's range (triangles()): the wide-range kernel (long double,
+// exact normals). Sized so that the exact results are normal doubles; compared with the reference in
+// MPFR at 2048 bits (the coordinates span 2^600: 256 bits would round the edges).
+struct ExtremeHinge {
+  const char* name;
+  std::array<double, 12> x;
+};
+std::vector<ExtremeHinge> extreme_hinges() {
+  const double big = 0x1p600;
+  return {
+      // A needle in general position: apex x0 at distance ~1 from the hinge edge of length ~2^601 (an
+      // altitude 2^-600 times the longest edge); x0 - x2 is not a long double: rounded, the triangle
+      // would be degenerate.
+      {"needle", {1, -1, 0, -big, -big, -big, big, big, big, big, -2 * big, 0.5 * big}},
+      // A hinge edge of length ~1, 2^-600 times the other edges (apexes in general directions).
+      {"short hinge edge", {0.25 * big, big, 0.5 * big, 0, 0, 0, 1, 0.5, -0.25, 1.5 * big, -big, 0.5 * big}},
+      // Both at once: the upper triangle a needle (altitude ~1 on a hinge edge of 2^300), the lower one
+      // with that hinge edge 2^-300 times its other edges.
+      {"needle on a short edge", {0x1p299, 1, 0.5, 0, 0, 0, 0x1p300, 0, 0, 0.3 * big, -big, 0.7 * big}},
+  };
+}
+
+TEST(HingeKernel, ExtremeShapesAreFiniteAndAccurate) {
+  for (const ExtremeHinge& h : extreme_hinges()) {
+    const HingeDerivatives<double> d = hinge_derivatives<double>(h.x);
+    ASSERT_TRUE(all_finite(d)) << h.name;
+    const ThetaDerivatives<mpfr> e = exact_with_bits(h.x, 2048);
+    const double t = std::fabs(d.theta - to_double(e.angle.theta)) / std::max(1.0, std::fabs(to_double(e.angle.theta))) / 0x1p-53;
+    const double g = test::normwise_units(d.grad, e.grad, 0x1p-53), H = test::normwise_units(d.hess, e.hess, 0x1p-53);
+    RecordProperty(std::string(h.name) + " units (theta, grad, hess)",
+                   std::to_string(t) + ", " + std::to_string(g) + ", " + std::to_string(H));
+    // kappa_shape is 2^600 here: the general bound says nothing. These shapes have no cancellation
+    // beyond the normals (exact): every quantity within a few units of 2^-64, rounded to double once.
+    // 4 units, the fast kernel's bound on well-shaped hinges.
+    EXPECT_LE(t, 4) << h.name;
+    EXPECT_LE(g, 4) << h.name;
+    EXPECT_LE(H, 4) << h.name;
+    // And exactly invariant under power-of-two scaling, here too (not scaled down by much: some Hessian
+    // entries, ~2^-1200, underflow at this size and would reappear, rounded at another scale).
+    for (int k : {-7, 9, 150}) {
+      const auto y = scaled_exactly(h.x, k);
+      if (!y) continue;
+      expect_scaled_exactly(d, hinge_derivatives<double>(*y), k, h.x);
+    }
+  }
+}
+
+TEST(HingeKernel, WideRangeKernelMatchesMpfr256OnWellShapedHinges) {
+  // The fallback on ordinary hinges (where MPFR at 256 bits is exact to the last bit of double): the
+  // quantities in long double (2^-64), eq. (6) in long double, each result rounded once: within the
+  // fast kernel's bounds, worst 4 and median 2 units of 2^-53.
+  std::vector<double> errors;
+  for (const auto& x : test::well_shaped_hinges(test::cases(100), 26)) {
+    HingeDerivatives<double> d;
+    detail::wide_range_kernel<double>(x, true, d);
+    const ThetaDerivatives<mpfr> e = exact(x);
+    const double h = test::normwise_units(d.hess, e.hess, 0x1p-53);
+    errors.push_back(h);
+    EXPECT_LE(h, 4) << test::describe(x);
+    EXPECT_LE(test::normwise_units(d.grad, e.grad, 0x1p-53), 4) << test::describe(x);
+  }
+  std::sort(errors.begin(), errors.end());
+  EXPECT_LE(errors[errors.size() / 2], 2) << "median Hessian error, units of 2^-53";
+  RecordProperty("worst_hessian_units", std::to_string(errors.back()));
+  RecordProperty("median_hessian_units", std::to_string(errors[errors.size() / 2]));
+}
+
+TEST(HingeKernel, PowerOfTwoScalingIsExactOverTheWholeExponentRange) {
+  // Near 2^-1000 the Hessian (~2^2000) overflows: it must then be infinite, never NaN; near 2^1000 it
+  // underflows (and coordinates near 2^1015 make differences overflow: the kernel quarters them).
+  std::vector<std::array<double, 12>> hinges = test::well_shaped_hinges(20, 27, 0);
+  hinges.push_back(kFinding2);
+  hinges.push_back(test::flat_hinge());
+  for (const auto& x : hinges) {
+    const HingeDerivatives<double> d = hinge_derivatives<double>(x);
+    for (int k : {-1000, -900, -600, 600, 900, 1000, 1015}) {
+      const auto y = scaled_exactly(x, k);
+      if (!y) continue;
+      const HingeDerivatives<double> s = hinge_derivatives<double>(*y);
+      for (int i = 0; i < 144; ++i) EXPECT_FALSE(std::isnan(s.hess.data()[i])) << k;
+      expect_scaled_exactly(d, s, k, x);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hinge::fast
