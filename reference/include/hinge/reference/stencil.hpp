@@ -77,10 +77,10 @@ inline void exact_product(long double a, long double b, long double& p, long dou
 // float and double by Kahan's algorithm with the hardware fused multiply-add (at most 2 units; Jeannerod,
 // Louvet & Muller, Math. Comp. 82, 2013); in long double from the two exact products, (p1 - p2) + (e1 -
 // e2) (the algorithm of Cornea, Harrison & Tang, 2002: a few units; p1 - p2 is exact where it cancels,
-// by Sterbenz's lemma); plainly in the
-// multiprecision types. The components of a cross product are such differences and cancel in needle
-// and obtuse triangles; this keeps N to a few units where the stencil is computed in long double (the
-// double reference's stencil) or double (the float reference's). Without it a needle's N carried a
+// by Sterbenz's lemma); plainly in the multiprecision types. The components of a cross product are
+// such differences and cancel in needle and obtuse triangles; this keeps N to a few units where the
+// stencil is computed in long double (the double reference's stencil) or double (the float
+// reference's). Without it a needle's N carried a
 // relative error ~kappa_shape 2^-64 that the cancellation of N0 + N~0 on near-flat hinges amplified to
 // no correct digit (docs/testing.md, Findings 1).
 template <class Scalar>
