@@ -1,16 +1,16 @@
 // hinge/fast/exact.hpp: error-free transformations and a small double-double type, the arithmetic that
-// lets the per-hinge kernel (hinge_kernel.hpp) round each stencil quantity to double once.
+// lets the double per-hinge kernel (src/hinge_kernel_lanes.hpp) round each stencil quantity to double
+// once; and the floating-point filter for the sign of theta.
 //
-//   two_sum(a, b)      s + e = a + b exactly (Knuth), any a, b
+//   two_sum(a, b)      s + e = a + b exactly (Knuth), any a, b; two_diff(a, b) the same for a - b
 //   fast_two_sum(a, b) s + e = a + b exactly when |a| >= |b| or a == 0 (Dekker)
 //   two_prod(a, b)     p + e = a b exactly with a fused multiply-add, barring underflow
 //
 // `DoubleDoubleOf<L>` is the unevaluated sum hi + lo (|lo| <= ulp(hi) / 2 after the operations below),
 // with about 106 bits: each operation has a relative error below 2^-100 (a few units of 2^-106; Joldes,
 // Muller & Popescu, ACM TOMS 44, 2017, for the algorithms used). Its `hi` is its value rounded to
-// double. L is double, or `Lanes2` (two doubles in one register, GCC vector extension): the same
-// operations lane by lane, so that the kernel treats the two triangles of a hinge at once, each lane
-// giving exactly the bits of the scalar code.
+// double. L is a type of lanes of doubles (lanes.hpp; `Lanes2` below for float's kernel): the same
+// operations lane by lane, each lane giving exactly the bits of the scalar code.
 //
 // two_sum and fast_two_sum serve long double too (the exact sums of hinge_kernel.hpp's wide-range path).
 //
@@ -34,7 +34,7 @@
 
 namespace hinge::fast {
 
-// Two doubles in one SSE2 register; + - * / act lane by lane.
+// Two doubles in one SSE2 register (float's per-hinge kernel computes in them); + - * / act lane by lane.
 typedef double Lanes2 __attribute__((vector_size(16)));
 
 // Lane-wise fused multiply-add and square root (where the processor has FMA the compiler makes one vector
@@ -49,6 +49,7 @@ HINGE_FAST_INLINE Lanes2 root(Lanes2 a) { return Lanes2{std::sqrt(a[0]), std::sq
 template <class L>
 HINGE_FAST_INLINE L splat(double x) {
   if constexpr (std::is_same_v<L, double>) return x;
+  else if constexpr (requires { L::broadcast(x); }) return L::broadcast(x);  // lanes.hpp
   else return L{x, x};
 }
 
@@ -56,13 +57,23 @@ template <class L>
 struct DoubleDoubleOf {
   L hi, lo;
 };
-using DoubleDouble = DoubleDoubleOf<double>;
-using DoubleDouble2 = DoubleDoubleOf<Lanes2>;
+
+// Whether W is a double-double of doubles or of lanes of doubles (lanes.hpp), not of long doubles.
+template <class W>
+inline constexpr bool kDoubleDoubleOfDoubles = false;
+template <class L>
+inline constexpr bool kDoubleDoubleOfDoubles<DoubleDoubleOf<L>> = !std::is_same_v<L, long double>;
 
 template <class L>
 HINGE_FAST_INLINE DoubleDoubleOf<L> two_sum(L a, L b) {
   const L s = a + b, bb = s - a;
   return {s, (a - (s - bb)) + (b - bb)};
+}
+// s + e = a - b exactly (two_sum(a, -b) without forming -b).
+template <class L>
+HINGE_FAST_INLINE DoubleDoubleOf<L> two_diff(L a, L b) {
+  const L s = a - b, bb = s - a;
+  return {s, (a - (s - bb)) - (b + bb)};
 }
 template <class L>
 HINGE_FAST_INLINE DoubleDoubleOf<L> fast_two_sum(L a, L b) {
@@ -74,8 +85,6 @@ HINGE_FAST_INLINE DoubleDoubleOf<L> two_prod(L a, L b) {
   const L p = a * b;
   return {p, fused(a, b, -p)};
 }
-// a - b exactly.
-HINGE_FAST_INLINE DoubleDouble two_diff(double a, double b) { return two_sum(a, -b); }
 
 template <class L>
 HINGE_FAST_INLINE DoubleDoubleOf<L> operator-(const DoubleDoubleOf<L>& a) {
@@ -90,59 +99,53 @@ template <class L>
 HINGE_FAST_INLINE DoubleDoubleOf<L> operator-(const DoubleDoubleOf<L>& a, const DoubleDoubleOf<L>& b) {
   return a + (-b);
 }
+// a b, relative error ~2^-104: the exact product of the high parts and the first-order terms of the low
+// parts (formed apart from it, which keeps the chain of dependent operations short).
 template <class L>
 HINGE_FAST_INLINE DoubleDoubleOf<L> operator*(const DoubleDoubleOf<L>& a, const DoubleDoubleOf<L>& b) {
   const DoubleDoubleOf<L> p = two_prod(a.hi, b.hi);
-  return fast_two_sum(p.hi, fused(a.hi, b.lo, fused(a.lo, b.hi, p.lo)));
+  return fast_two_sum(p.hi, p.lo + fused(a.hi, b.lo, a.lo * b.hi));
 }
-// One Newton step on the double quotient: relative error ~2^-104.
+// 1 / sqrt(a) from an estimate y with a relative error of a few units of 2^-53: y' = y + y (1 - a y^2) / 2,
+// relative error ~2^-104 (Newton's step squares the error).
 template <class L>
-HINGE_FAST_INLINE DoubleDoubleOf<L> operator/(const DoubleDoubleOf<L>& a, const DoubleDoubleOf<L>& b) {
-  const L q = a.hi / b.hi;
-  const DoubleDoubleOf<L> p = two_prod(q, b.hi);  // q b, to first order
-  const L r = ((a.hi - p.hi) - p.lo + a.lo) - q * b.lo;
-  return fast_two_sum(q, r / b.hi);
-}
-// 1 / sqrt(a): y' = y + y (1 - a y^2) / 2 from the double result y.
-template <class L>
-HINGE_FAST_INLINE DoubleDoubleOf<L> rsqrt(const DoubleDoubleOf<L>& a) {
-  const L one = splat<L>(1);
-  const L y = one / root(a.hi);
+HINGE_FAST_INLINE DoubleDoubleOf<L> rsqrt_step(const DoubleDoubleOf<L>& a, const L& y) {
   const DoubleDoubleOf<L> ay2 = a * two_prod(y, y);
-  const L e = (one - ay2.hi) - ay2.lo;
+  const L e = (splat<L>(1) - ay2.hi) - ay2.lo;
   return fast_two_sum(y, y * e * 0.5);
 }
+// 1 / sqrt(a), from the double result y = 1 / sqrt(a.hi).
 template <class L>
-HINGE_FAST_INLINE DoubleDoubleOf<L> half(const DoubleDoubleOf<L>& a) {
-  return {a.hi * 0.5, a.lo * 0.5};
+HINGE_FAST_INLINE DoubleDoubleOf<L> rsqrt(const DoubleDoubleOf<L>& a) {
+  return rsqrt_step(a, splat<L>(1) / root(a.hi));
 }
-
 // The sign of det[e0, x0 - x1, x1 - x3] (the sign of theta, proofs/sign-convention.md) from the
 // rounded differences p = fl(x2 - x1), q = fl(x0 - x1), r = fl(x3 - x1), each possibly times one exact
 // power of two: -1, 0 or +1 when certified, kUndecided otherwise (then hinge_orientation_exact decides).
 // This is the filter of reference/src/predicates.cpp (bound fl(9 u P'), guard [2^-300, 2^300]), with the
 // same proof; `computed` receives the (uncertified) hinge determinant.
 constexpr int kUndecided = 2;
+// Without branches: the sign of theta is data (random in a benchmark, alternating on a mesh), and a
+// mispredicted branch in the middle of a kernel discards the work that followed it.
 HINGE_FAST_INLINE int orientation_filter(const double p[3], const double q[3], const double r[3], double& computed) {
   constexpr double lo = 0x1p-300, hi = 0x1p300, u = 0x1p-53;
   bool guarded = true;
   double det = 0.0, perm = 0.0;
   for (int k = 0; k < 3; ++k) {
     const double a = std::fabs(p[k]), b = std::fabs(q[k]), c = std::fabs(r[k]);
-    guarded = guarded && (a == 0.0 || (a >= lo && a <= hi)) && (b == 0.0 || (b >= lo && b <= hi)) &&
-              (c == 0.0 || (c >= lo && c <= hi));
+    guarded &= ((a == 0.0) | ((a >= lo) & (a <= hi))) & ((b == 0.0) | ((b >= lo) & (b <= hi))) &
+               ((c == 0.0) | ((c >= lo) & (c <= hi)));
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     const double m1 = q[i] * r[j], m2 = q[j] * r[i];
     det += p[k] * (m1 - m2);
     perm += a * (std::fabs(m1) + std::fabs(m2));
   }
   computed = -det;  // the hinge determinant is -det[p, q, r]
-  if (!guarded) return kUndecided;
-  if (perm == 0.0) return 0;
   const double bound = 9.0 * u * perm;
-  if (det > bound) return -1;
-  if (-det > bound) return 1;
-  return kUndecided;
+  const int negative = det > bound, positive = -det > bound;
+  // perm == 0: every term is zero, so the determinant is exactly 0.
+  const int decided = guarded & (negative | positive | (perm == 0.0));
+  return decided ? positive - negative : kUndecided;
 }
 
 }  // namespace hinge::fast

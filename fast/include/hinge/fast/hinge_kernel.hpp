@@ -26,18 +26,19 @@
 //   H22 = S(P_22) + S(P~_22) - (N_0 + N~_0),  H12 = P_12 + P_21^T + P~_12 + P~_21^T + N_0 + N~_0,
 //   H03 = 0, the tilde blocks alike, and H_ji = H_ij^T                                               eq. (6)
 //
-// Accuracy (double): the coordinate differences are exact (two_sum), every dot and cross product is
-// evaluated in double-double arithmetic (exact.hpp), the two triangles side by side in the two lanes of
-// one register, and each of the per-triangle quantities above is rounded to double once; only then eq.
-// (6) runs in double, one block column at a time (columns.hpp). Eq. (6) adds upper- and lower-triangle
-// terms that nearly cancel on near-folded hinges, so few-unit errors in n, q, a would be amplified;
-// rounded once they are not (measured on 4000 well-shaped hinges against MPFR at 256 bits: normwise
-// median 1.15, worst 2.8 units of 2^-53; tests/fast/hinge_kernel_test.cpp asserts 2 and 4). Every
-// product is formed from the edges directly, never from squared lengths (no law of cosines: e_2 . e_0
-// and e_0 . e_1 are dot products, C = e_2 x e_0 and e_0 x C are cross products with the hinge edge), so
-// that a short hinge edge costs no digits beyond the problem's own condition. float computes the same
-// quantities in double and rounds them to float; long double, float128, bin128 and mpfr compute them in
-// their own format (worst about 10 units of their own precision on well-shaped hinges).
+// Accuracy (double; src/hinge_kernel_lanes.hpp): the coordinate differences are exact (two_diff), every
+// dot and cross product is evaluated in double-double arithmetic (exact.hpp), both triangles and their
+// edges side by side in eight lanes (lanes.hpp), and each of the per-triangle quantities above is rounded
+// to double once; only then eq. (6) runs in double. Eq. (6) adds upper- and lower-triangle terms that
+// nearly cancel on near-folded hinges, so few-unit errors in n, q, a would be amplified; rounded once
+// they are not (measured on 20000 well-shaped hinges against MPFR at 256 bits: normwise median 1.07,
+// worst 3.44 units of 2^-53; tests/fast/hinge_kernel_test.cpp asserts 2 and 4). theta comes from
+// |n - n~|^2 and |n + n~|^2 summed in double-double (worst 2.4 units). Every product is formed from the
+// edges directly, never from squared lengths (no law of cosines: e_2 . e_0 and e_0 . e_1 are dot
+// products, C = e_2 x e_0 and e_0 x C are cross products with the hinge edge), so that a short hinge edge
+// costs no digits beyond the problem's own condition. float computes the same quantities in double and
+// rounds them to float; long double, float128, bin128 and mpfr compute them in their own format (worst
+// about 10 units of their own precision on well-shaped hinges); those types use the generic kernel below.
 //
 // Range (double, float): the edges are brought by a power of two to a largest component M in [2^-200,
 // 2^200] (left alone when they are there already, else to [1, 2); results scaled back exactly), and
@@ -102,8 +103,8 @@ struct HingeTriangle {
 namespace detail {
 
 // The type the per-triangle quantities are computed in before they are rounded to Scalar once, two
-// triangles at a time (lane 0 the upper, lane 1 the lower): double-double in two SSE lanes for double,
-// two doubles for float, a pair of Scalar otherwise.
+// triangles at a time (lane 0 the upper, lane 1 the lower): two doubles for float, a pair of Scalar
+// otherwise. (double has its own kernel in lanes, src/hinge_kernel_lanes.hpp.)
 template <class W>
 struct Pair {
   W v[2];
@@ -115,7 +116,6 @@ struct Pair {
   friend HINGE_FAST_INLINE Pair operator-(const Pair& a) { return {{-a[0], -a[1]}}; }
 };
 template <class Scalar> struct WideOf { using type = Pair<Scalar>; };
-template <> struct WideOf<double> { using type = DoubleDouble2; };
 template <> struct WideOf<float> { using type = Lanes2; };
 template <class Scalar> using Wide = typename WideOf<Scalar>::type;
 
@@ -125,16 +125,15 @@ template <class W> using Vec = std::array<W, 3>;
 
 template <class W>
 HINGE_FAST_INLINE W dot(const Vec<W>& a, const Vec<W>& b) {
-  if constexpr (std::is_same_v<W, DoubleDouble2>) {
-    // Exact products of the high parts and their exact sum (two_prod, two_sum); the errors and the
-    // first-order terms of the low parts gathered in one double.
+  if constexpr (kDoubleDoubleOfDoubles<W>) {
+    // Exact products of the high parts and their exact sum (two_prod, two_sum); their errors and the
+    // first-order terms of the low parts (each formed apart: a short chain of dependent operations)
+    // gathered in one double.
     const auto p0 = two_prod(a[0].hi, b[0].hi), p1 = two_prod(a[1].hi, b[1].hi), p2 = two_prod(a[2].hi, b[2].hi);
     const auto s1 = two_sum(p0.hi, p1.hi), s2 = two_sum(s1.hi, p2.hi);
-    Lanes2 lo = ((p0.lo + p1.lo) + (p2.lo + s1.lo)) + s2.lo;
-    lo = fused(a[0].hi, b[0].lo, fused(a[0].lo, b[0].hi, lo));
-    lo = fused(a[1].hi, b[1].lo, fused(a[1].lo, b[1].hi, lo));
-    lo = fused(a[2].hi, b[2].lo, fused(a[2].lo, b[2].hi, lo));
-    return fast_two_sum(s2.hi, lo);
+    const auto t0 = fused(a[0].hi, b[0].lo, a[0].lo * b[0].hi), t1 = fused(a[1].hi, b[1].lo, a[1].lo * b[1].hi),
+               t2 = fused(a[2].hi, b[2].lo, a[2].lo * b[2].hi);
+    return fast_two_sum(s2.hi, (((p0.lo + p1.lo) + (p2.lo + s1.lo)) + s2.lo) + ((t0 + t1) + t2));
   } else {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   }
@@ -143,13 +142,11 @@ HINGE_FAST_INLINE W dot(const Vec<W>& a, const Vec<W>& b) {
 // a b - c d
 template <class W>
 HINGE_FAST_INLINE W difference_of_products(const W& a, const W& b, const W& c, const W& d) {
-  if constexpr (std::is_same_v<W, DoubleDouble2>) {
+  if constexpr (kDoubleDoubleOfDoubles<W>) {
     const auto p = two_prod(a.hi, b.hi), r = two_prod(c.hi, d.hi);
-    const auto s = two_sum(p.hi, -r.hi);
-    Lanes2 lo = (p.lo - r.lo) + s.lo;
-    lo = fused(a.hi, b.lo, fused(a.lo, b.hi, lo));
-    lo = fused(-c.hi, d.lo, fused(-c.lo, d.hi, lo));
-    return fast_two_sum(s.hi, lo);
+    const auto s = two_diff(p.hi, r.hi);
+    const auto t = fused(a.hi, b.lo, a.lo * b.hi) - fused(c.hi, d.lo, c.lo * d.hi);
+    return fast_two_sum(s.hi, ((p.lo - r.lo) + s.lo) + t);
   } else if constexpr (std::is_same_v<W, Lanes2>) {
     const Lanes2 cd = c * d;  // Kahan: error <= 2 units (float's quantities are computed in double)
     return fused(a, b, -cd) + fused(-c, d, cd);
@@ -166,8 +163,7 @@ HINGE_FAST_INLINE Vec<W> cross(const Vec<W>& a, const Vec<W>& b) {
 
 template <class W>
 HINGE_FAST_INLINE W inverse_sqrt(const W& a) {
-  if constexpr (std::is_same_v<W, DoubleDouble2>) return rsqrt(a);
-  else if constexpr (std::is_same_v<W, Lanes2>) return splat<Lanes2>(1) / root(a);
+  if constexpr (std::is_same_v<W, Lanes2>) return splat<Lanes2>(1) / root(a);
   else {
     using std::sqrt;
     using E = std::remove_cvref_t<decltype(a[0])>;
@@ -178,11 +174,7 @@ HINGE_FAST_INLINE W inverse_sqrt(const W& a) {
 // a b rounded to Scalar once, lane by lane.
 template <class Scalar, class W>
 HINGE_FAST_INLINE std::array<Scalar, 2> product_rounded(const W& a, const W& b) {
-  if constexpr (std::is_same_v<W, DoubleDouble2>) {
-    const Lanes2 p = a.hi * b.hi;
-    const Lanes2 r = p + fused(a.hi, b.lo, fused(a.lo, b.hi, fused(a.hi, b.hi, -p)));
-    return {r[0], r[1]};
-  } else if constexpr (std::is_same_v<W, Lanes2>) {
+  if constexpr (std::is_same_v<W, Lanes2>) {
     const Lanes2 r = a * b;
     return {static_cast<Scalar>(r[0]), static_cast<Scalar>(r[1])};
   } else {
@@ -190,12 +182,10 @@ HINGE_FAST_INLINE std::array<Scalar, 2> product_rounded(const W& a, const W& b) 
   }
 }
 
-// x_a - x_b (lane 0) and x_c - x_d (lane 1) of the input doubles: exactly (double-double), or in W.
+// x_a - x_b (lane 0) and x_c - x_d (lane 1) of the input doubles, in W.
 template <class W>
 HINGE_FAST_INLINE W difference(double xa, double xb, double xc, double xd) {
-  if constexpr (std::is_same_v<W, DoubleDouble2>) {
-    return two_sum(Lanes2{xa, xc}, Lanes2{-xb, -xd});
-  } else if constexpr (std::is_same_v<W, Lanes2>) {
+  if constexpr (std::is_same_v<W, Lanes2>) {
     return Lanes2{xa, xc} - Lanes2{xb, xd};
   } else {
     using E = std::remove_cvref_t<decltype(std::declval<W>()[0])>;
@@ -206,19 +196,11 @@ HINGE_FAST_INLINE W difference(double xa, double xb, double xc, double xd) {
 // Lane i of a wide value, as a double (its high part) for the filters.
 template <class W>
 HINGE_FAST_INLINE double high_part(const W& a, int i) {
-  if constexpr (std::is_same_v<W, DoubleDouble2>) return a.hi[i];
-  else if constexpr (std::is_same_v<W, Lanes2>) return a[i];
+  if constexpr (std::is_same_v<W, Lanes2>) return a[i];
   else return to_double(a[i]);
 }
 
 // --- two triangles at once ------------------------------------------------------------------------
-
-// The lanes' high parts as doubles (double-double and float's double lanes only).
-template <class W>
-HINGE_FAST_INLINE Lanes2 high_lanes(const W& a) {
-  if constexpr (std::is_same_v<W, DoubleDouble2>) return a.hi;
-  else return a;
-}
 
 // The summaries of the upper (lane 0) and lower (lane 1) triangles, with edges f0, f1, f2 (f0 + f1 + f2
 // = 0) whose labels run counter-clockwise about C = f1 x f2 = f2 x f0 (given: C = 2A n, the cross product
@@ -252,8 +234,8 @@ HINGE_FAST_INLINE Lanes2 high_lanes(const W& a) {
 // After rescaling (M in [1, 2)) the same bounds hold a fortiori.
 template <class W>
 HINGE_FAST_INLINE bool in_range(const W& L0, const W& S, double P2) {
-  if constexpr (std::is_same_v<W, DoubleDouble2> || std::is_same_v<W, Lanes2>) {
-    const Lanes2 s = (high_lanes(S) * P2) * P2, lambda = high_lanes(L0) * P2;
+  if constexpr (std::is_same_v<W, Lanes2>) {
+    const Lanes2 s = (S * P2) * P2, lambda = L0 * P2;
     return s[0] >= 0x1p-140 && s[1] >= 0x1p-140 && lambda[0] >= 0x1p-500;
   } else {
     (void)L0, (void)S, (void)P2;
@@ -291,22 +273,6 @@ HINGE_FAST_INLINE void triangles(const Vec<W>& f0, const Vec<W>& f1, const Vec<W
   const std::array<Scalar, 2> a2 = product_rounded<Scalar>(D1, K);  // cos(alpha_1)/h_2 = -(e_2 . e_0) / (l_0 2A)
   T.a = {a0[0], Scalar(-a1[0]), Scalar(-a2[0])};
   U.a = {a0[1], Scalar(-a1[1]), Scalar(-a2[1])};
-}
-
-// True when lane i of the cross product C = f1 x f2 (of exact edges) is certainly nonzero: some
-// component exceeds the bound on its evaluation error (double-double: a few units of 2^-106 of the
-// terms; the bound 2^-90 leaves a wide margin). Products below 2^-900 could have lost their low parts to
-// underflow: then the caller decides exactly. Other types always ask the exact predicate.
-template <class W>
-HINGE_FAST_INLINE bool certainly_nonzero(const Vec<W>& C, const Vec<W>& f1, const Vec<W>& f2, int lane) {
-  if constexpr (std::is_same_v<W, DoubleDouble2>) {
-    for (int k = 0; k < 3; ++k) {
-      const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const double perm = std::fabs(f1[i].hi[lane] * f2[j].hi[lane]) + std::fabs(f1[j].hi[lane] * f2[i].hi[lane]);
-      if (perm > 0x1p-900 && std::fabs(C[k].hi[lane]) > 0x1p-90 * perm) return true;
-    }
-  }
-  return false;
 }
 
 // The exact sign of theta: the filter of exact.hpp, else hinge_orientation_exact.
@@ -377,16 +343,11 @@ HINGE_FAST_INLINE void hessian(const HingeTriangle<Scalar>& T, const HingeTriang
   throw InputError("hinge coordinates are not finite");
 }
 
-// a times 2^k, lane by lane (high and low parts): exact but where a result is subnormal.
+// a times 2^k, lane by lane: exact but where a result is subnormal.
 template <class W>
 HINGE_FAST_INLINE void scale_by_power_of_two(W& a, int k) {
   for (int l = 0; l < 2; ++l) {
-    if constexpr (std::is_same_v<W, DoubleDouble2>) {
-      a.hi[l] = std::ldexp(a.hi[l], k);
-      a.lo[l] = std::ldexp(a.lo[l], k);
-    } else {
-      a[l] = std::ldexp(a[l], k);
-    }
+    a[l] = std::ldexp(a[l], k);
   }
 }
 
@@ -477,7 +438,7 @@ void wide_range_kernel(const std::array<double, 12>& x, bool want_hessian, Hinge
 template <class Scalar, bool kExactCross = false>
 HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<Scalar>& out) {
   using W = Wide<Scalar>;
-  constexpr bool kRanged = std::is_same_v<W, DoubleDouble2> || std::is_same_v<W, Lanes2>;
+  constexpr bool kRanged = std::is_same_v<W, Lanes2>;
   static_assert(!kExactCross || std::is_same_v<W, Pair<long double>>);
   double probe = 0;  // NaN when a coordinate is not finite
   for (double c : x) probe += c * 0.0;
@@ -544,9 +505,9 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   triangles<Scalar>(f0, f1, f2, C, L0, S, T, U, nw);
   for (int k = 0; k < 3; ++k) U.n[k] = -U.n[k];  // n~ = -C~ / |C~|: the lower labels run clockwise
   const Point x0{x[0], x[1], x[2]}, x1{x[3], x[4], x[5]}, x2{x[6], x[7], x[8]}, x3{x[9], x[10], x[11]};
-  if (!certainly_nonzero(C, f2, f0, 0) && zero_area_exact(x0, x1, x2))
+  if (zero_area_exact(x0, x1, x2))
     throw InputError("degenerate hinge: the upper triangle (x0, x1, x2) has zero area");
-  if (!certainly_nonzero(C, f2, f0, 1) && zero_area_exact(x3, x2, x1))
+  if (zero_area_exact(x3, x2, x1))
     throw InputError("degenerate hinge: the lower triangle (x3, x2, x1) has zero area");
 
   // theta = sgn 2 atan2(|n - n~|, |n + n~|) (Fig. 3 and eq. 12), the sign decided exactly; with n~ the
@@ -569,17 +530,8 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   const int sign = orientation(x, p, q, r);
   Vec<Scalar> minus, plus;
   for (int k = 0; k < 3; ++k) {
-    if constexpr (std::is_same_v<W, DoubleDouble2>) {
-      const DoubleDouble a{nw[k].hi[0], nw[k].lo[0]}, b{nw[k].hi[1], nw[k].lo[1]};
-      minus[k] = (a + b).hi;
-      plus[k] = (a - b).hi;
-    } else if constexpr (std::is_same_v<W, Lanes2>) {
-      minus[k] = static_cast<Scalar>(nw[k][0] + nw[k][1]);
-      plus[k] = static_cast<Scalar>(nw[k][0] - nw[k][1]);
-    } else {
-      minus[k] = static_cast<Scalar>(nw[k][0] + nw[k][1]);
-      plus[k] = static_cast<Scalar>(nw[k][0] - nw[k][1]);
-    }
+    minus[k] = static_cast<Scalar>(nw[k][0] + nw[k][1]);
+    plus[k] = static_cast<Scalar>(nw[k][0] - nw[k][1]);
   }
   using std::atan2;
   using std::sqrt;
@@ -636,10 +588,14 @@ template <class Scalar>
   out.hess = w.hess.template cast<Scalar>();
 }
 
-// The double kernel, compiled for the baseline x86-64 and for x86-64-v3 (hardware fused multiply-add,
-// AVX2) and chosen at run time (src/hinge_kernel_double.cpp). Both give the same bits: no contraction,
-// and std::fma is exact either way.
+// The double kernel (src/hinge_kernel_lanes.hpp), compiled for the baseline x86-64, x86-64-v3 (AVX2 and
+// a hardware fused multiply-add) and x86-64-v4 (AVX-512), the best the processor has chosen at run time
+// (src/hinge_kernel_double.cpp); all give the same bits.
 void hinge_kernel_double(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);
+// The same compiled for one instruction set (for tests); false, and nothing written, where the processor
+// lacks it.
+enum class KernelIsa { baseline, avx2, avx512 };
+bool hinge_kernel_double(KernelIsa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);
 
 }  // namespace detail
 
