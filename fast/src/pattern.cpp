@@ -138,6 +138,21 @@ Pattern::Pattern(const Topology& topology, EdgeOrientation orientation)
     }
     face.first = first;
   }
+
+  // The order in which the assembly first touches each vertex's columns (for its prefetches).
+  first_writer_.assign(n, std::numeric_limits<Index>::max());
+  for (std::size_t f = faces_.size(); f-- > 0;) {
+    const Face& face = faces_[f];
+    if (face.highest < 0) continue;
+    for (Index v : face.v) first_writer_[v] = static_cast<Index>(f);
+    for (int k = 0; k < 3; ++k)
+      if ((face.owns >> k) & 1u) first_writer_[hinges_[face.hinge[k]].s] = static_cast<Index>(f);
+  }
+  first_write_order_.clear();
+  for (std::size_t v = 0; v < n; ++v)
+    if (first_writer_[v] != std::numeric_limits<Index>::max()) first_write_order_.push_back(static_cast<Index>(v));
+  std::stable_sort(first_write_order_.begin(), first_write_order_.end(),
+                   [this](Index a, Index b) { return first_writer_[a] < first_writer_[b]; });
 }
 
 void Pattern::fill_inner(SlotIndex* inner, Index first, Index last) const {

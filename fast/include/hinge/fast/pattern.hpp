@@ -106,6 +106,10 @@ class Pattern {
   SlotIndex entry(SlotIndex base, Index b, int r, int c) const { return base + c * stride_[b] + (c == 2) + r; }
 
   const std::vector<Face>& faces() const { return faces_; }
+  // The column vertices in the order of the first face that writes into their columns (ties by vertex),
+  // and that face: the assembly prefetches a vertex's columns a few faces before that one (assemble.hpp).
+  const std::vector<Index>& first_write_order() const { return first_write_order_; }
+  const std::vector<Index>& first_writer() const { return first_writer_; }
   // Per hinge (Topology::hinges order): its owner's view.
   const std::vector<OwnedHinge>& hinges() const { return hinges_; }
 
@@ -123,6 +127,7 @@ class Pattern {
   std::vector<SlotIndex> diagonal_base_, stride_;
   std::vector<Face> faces_;
   std::vector<OwnedHinge> hinges_;
+  std::vector<Index> first_write_order_, first_writer_;
 };
 
 template <class Scalar>
