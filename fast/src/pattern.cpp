@@ -93,17 +93,17 @@ Pattern::Pattern(const Topology& topology, EdgeOrientation orientation)
     const Edge& e = topology.edges[topology.hinges[h].edge];
     const int which = orientation == EdgeOrientation::first_face ? 0 : 1;
     OwnedHinge& o = hinges_[h];
-    o.owner = e.face[which];
+    const Index owner = e.face[which];
+    const int local = e.local[which];
     o.other_face = e.face[1 - which];
-    o.local = e.local[which];
     o.s = faces[o.other_face][e.local[1 - which]];
-    const auto& v = faces[o.owner];
-    const Index p = v[o.local], q = v[(o.local + 1) % 3], r = v[(o.local + 2) % 3];
+    const auto& v = faces[owner];
+    const Index p = v[local], q = v[(local + 1) % 3], r = v[(local + 2) % 3];
     o.slot_ps = p == o.s ? -1 : find_block(p, o.s);
     o.slot_qs = find_block(q, o.s);
     o.slot_rs = find_block(r, o.s);
-    Face& face = faces_[o.owner];
-    face.owns |= 1u << o.local;
+    Face& face = faces_[owner];
+    face.owns |= 1u << local;
     face.lowest = std::min(face.lowest, o.s);
     face.highest = std::max(face.highest, o.s);
   }

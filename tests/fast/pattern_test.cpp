@@ -81,13 +81,18 @@ TEST(Pattern, OwnershipFollowsTheEdgeOrientation) {
   for (EdgeOrientation o : {EdgeOrientation::first_face, EdgeOrientation::second_face}) {
     const Pattern p(t, o);
     std::vector<int> owners(t.hinges.size(), 0);
+    std::vector<Index> owner(t.hinges.size(), -1);
     for (std::size_t f = 0; f < p.faces().size(); ++f)
       for (int k = 0; k < 3; ++k)
-        if ((p.faces()[f].owns >> k) & 1u) ++owners[p.faces()[f].hinge[k]];
+        if ((p.faces()[f].owns >> k) & 1u) {
+          ++owners[p.faces()[f].hinge[k]];
+          owner[p.faces()[f].hinge[k]] = static_cast<Index>(f);
+        }
     for (std::size_t h = 0; h < t.hinges.size(); ++h) {
       EXPECT_EQ(owners[h], 1) << h;  // exactly one face per interior edge
       const Edge& e = t.edges[t.hinges[h].edge];
-      EXPECT_EQ(p.hinges()[h].owner, o == EdgeOrientation::first_face ? e.face[0] : e.face[1]);
+      EXPECT_EQ(owner[h], o == EdgeOrientation::first_face ? e.face[0] : e.face[1]);
+      EXPECT_EQ(p.hinges()[h].other_face, o == EdgeOrientation::first_face ? e.face[1] : e.face[0]);
     }
   }
 }

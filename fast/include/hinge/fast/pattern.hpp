@@ -39,10 +39,9 @@ using SlotIndex = std::int32_t;  // Eigen::SparseMatrix's default StorageIndex: 
 class Pattern {
  public:
   // A hinge as the face that owns it sees it (Algorithm 2, lines 15-20).
+  // (Which face owns it and its local edge there: Face::owns of the face.)
   struct OwnedHinge {
-    Index owner = -1;          // the owning face; the hinge's edge is its local edge `local`
     Index other_face = -1;     // the face across the edge
-    int local = -1;
     Index s = -1;              // its vertex opposite the edge
     SlotIndex slot_ps = -1;    // blocks (p, s), (q, s), (r, s), p, q, r the owner's vertices k, k+1, k+2
     SlotIndex slot_qs = -1;    // for the edge k (its base; -1 when the two vertices coincide: a diagonal block)
