@@ -50,16 +50,13 @@ HINGE_FAST_INLINE void face_pass_lanes(const Mesh& mesh, const Pattern& pattern,
     }
     const V N = cross(a, b);
     const D S = dot(N, N);  // (2A)^2
-    // 1 / 2A from y = 1 / sqrt of N . N in double and Newton's step y (1 + e/2), e = 1 - S y^2 (as in the
-    // per-hinge kernel), and n = N y (1 + e/2), each rounded once.
-    const L one = L::broadcast(1);
-    const L y = one / root(N[0].hi * N[0].hi + N[1].hi * N[1].hi + N[2].hi * N[2].hi);
-    const D y2 = two_prod(y, y);
-    const L half_e = -((fused(S.hi, y2.hi, -one) + S.hi * y2.lo) + S.lo * y2.hi) * 0.5;
+    // 1 / 2A from y = 1 / sqrt of N . N in double and Newton's step y (1 + e/2), e = 1 - S y^2
+    // (exact.hpp, rsqrt_correction), and n = N y (1 + e/2), each rounded once.
+    const L y = L::broadcast(1) / root(N[0].hi * N[0].hi + N[1].hi * N[1].hi + N[2].hi * N[2].hi);
+    const L half_e = rsqrt_correction(S, y);
     alignas(64) double out[5][8];  // n, 1 / 2A, certainty
     for (int c = 0; c < 3; ++c) {
-      const D Ny = two_prod(N[c].hi, y);
-      const L n = Ny.hi + ((Ny.lo + N[c].lo * y) + Ny.hi * half_e);
+      const L n = times_corrected(N[c], y, half_e).hi;
       std::memcpy(out[c], &n, sizeof n);
     }
     const L inverse = y + y * half_e;

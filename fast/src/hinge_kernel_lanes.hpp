@@ -12,8 +12,8 @@
 //   dots   lanes 0 .. 3: S = C . C = (2A)^2, L0 = f0 . f0 = l_0^2, D1 = f2 . f0, D2 = f0 . f1
 // so that the three cross products X_j of a triangle, or four of its dot products, cost one vector
 // operation for both triangles. Every per-triangle quantity of hinge_kernel.hpp's header (n, q_j, a_j,
-// r_0) is computed exactly as the generic kernel computes it in double-double and rounded once, by the
-// same sequence of operations lane by lane; eqs. (4) and (6) follow in double.
+// r_0) is computed in double-double (exact.hpp) and rounded to double once; eqs. (4) and (6) follow in
+// double.
 //
 // Eq. (6) in lanes. With c = (-a_0, a_1, a_2) (eq. 4 reads grad_{x_I} theta = c_I n on each triangle),
 // the upper triangle's part of block (I, J), column c, is
@@ -150,7 +150,7 @@ struct LanesOutcome {
 };
 
 // The vector work of the kernel: grad theta and (if asked) Hess theta into `out`, the rest into the
-// outcome, which finish_lanes() (hinge_kernel_double.cpp) completes. There is no call in it (the calls
+// outcome, which evaluate() (hinge_kernel_double.cpp) completes. There is no call in it (the calls
 // to the exact predicates and atan2 are the caller's): GCC spills every vector register of a function
 // around any call in it. `kRescaled`: the edges are first brought to M in [1, 2) by a power of two
 // (the rare path, the outcome `rescale` of the common one: M outside [2^-200, 2^200], as in the generic
@@ -229,21 +229,18 @@ HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, boo
   // relative errors of order e^2 ~ 2^-104,
   //   1/(2A)^2 = y_S^2 (1 + e_S),  K = 1/(l_0 2A) = y_S y_L (1 + (e_S + e_L)/2),  1/l_0^2 = y_L^2 (1 + e_L),
   //   n = C y_S (1 + e_S/2)
-  // (y^2 and y_S y_L exact, two_prod; a y^2 - 1 by a fused multiply-add, exact but for its last rounding).
+  // (exact.hpp, rsqrt_correction; y_S y_L exact, two_prod).
   const L estimates = blend<0, 1, 1, 1>(sum_of_three(Cv.hi * Cv.hi),
                                         blend<0, 0, 1, 1>(spread<0>(F[0].hi * F[0].hi + F[1].hi * F[1].hi + F[2].hi * F[2].hi), one));
   const L y = one / root(estimates);  // lanes 0, 1: y_S, y_L (2, 3: 1)
-  const D ays = D{blend<0, 0, 1, 1>(dots.hi, one), blend<0, 0, 1, 1>(dots.lo, nothing)};
-  const D y2 = two_prod(y, y);
-  const L half_e = -((fused(ays.hi, y2.hi, -one) + ays.hi * y2.lo) + ays.lo * y2.hi) * 0.5;  // e/2
+  const L half_e = rsqrt_correction(D{blend<0, 0, 1, 1>(dots.hi, one), blend<0, 0, 1, 1>(dots.lo, nothing)}, y);  // e/2
   const D yy = two_prod(permute<0, 0, 1, 1>(y), permute<0, 1, 1, 1>(y));  // y_S^2, y_S y_L, y_L^2
   const L ee = permute<0, 0, 1, 1>(half_e) + permute<0, 1, 1, 1>(half_e);   // e_S, (e_S + e_L)/2, e_L
   const D G{yy.hi, yy.lo + yy.hi * ee};                                        // 1/(2A)^2, K, 1/l_0^2
   const D invS = spread_dd<0>(G), K = spread_dd<1>(G), RL = spread_dd<2>(G);
 
   const L lower_negated = L::make(1, 1, 1, 1, -1, -1, -1, -1);
-  const D Cy = two_prod(Cv.hi, spread<0>(y));
-  const D nw = fast_two_sum(Cy.hi, (Cy.lo + Cv.lo * spread<0>(y)) + Cy.hi * spread<0>(half_e));  // n | -n~, double-double
+  const D nw = times_corrected(Cv, spread<0>(y), spread<0>(half_e));  // n | -n~, double-double
   const L nv = nw.hi * lower_negated;       // n | n~ (the lower labels run clockwise)
   const L n[3] = {spread<0>(nv), spread<1>(nv), spread<2>(nv)};
   L q[3];
@@ -254,10 +251,11 @@ HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, boo
   // a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 . e_0) / (l_0 2A)
   const L a = round_product(permute_dd<1, 3, 2, 3>(dots), K) * L::make(1, -1, -1, 0, 1, -1, -1, 0);
 
-  // Validity: each triangle's area is certainly nonzero when some component k of C exceeds its error
-  // bound (hinge_kernel.hpp, certainly_nonzero): perm_k > 2^-900 and |C_k| > 2^-90 perm_k, that is where
-  // both differences below are positive (exactly: a difference of doubles has the sign of their
-  // comparison). Otherwise the caller decides exactly.
+  // Validity: each triangle's area is certainly nonzero when some component k of C exceeds the bound on
+  // its evaluation error (a few units of 2^-106 of perm_k = |f2_i f0_j| + |f2_j f0_i|; 2^-90 leaves a wide
+  // margin, and below 2^-900 the products' low parts may have underflowed): perm_k > 2^-900 and |C_k| >
+  // 2^-90 perm_k, that is where both differences below are positive (exactly: a difference of doubles has
+  // the sign of their comparison). Otherwise the caller decides exactly.
   {
     const L perm = magnitude(f2_yzx.hi * f0_zxy.hi) + magnitude(f2_zxy.hi * f0_yzx.hi);
     const L certain = largest_of_three(smaller(perm - L::broadcast(0x1p-900), magnitude(Cv.hi) - perm * 0x1p-90));
@@ -291,10 +289,9 @@ HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, boo
     o.sign = decided ? positive - negative : kUndecided;
   }
   // theta = sgn 2 atan2(|n - n~|, |n + n~|) (Fig. 3 and eq. 12): nw's halves are n and -n~ in
-  // double-double, so their sum is n - n~ (half 0) and their difference -(n + n~) (half 1).
-  // The squared lengths |n - n~|^2 and |n + n~|^2, summed in double-double and rounded once; theta / 2 =
-  // atan2(|n - n~|, |n + n~|) is the caller's (libm), tan(theta/2) = |n - n~| / |n + n~| (eq. 12) the square
-  // root of their quotient.
+  // double-double, so their sum is n - n~ (half 0) and their difference -(n + n~) (half 1). Their squared
+  // lengths are summed in double-double and rounded once; the atan2 is the caller's (libm), tan(theta/2) =
+  // |n - n~| / |n + n~| the square root of their quotient.
   {
     const D t{swap_halves(nw.hi) * lower_negated, swap_halves(nw.lo) * lower_negated};
     const D s = nw + t;

@@ -223,21 +223,10 @@ HINGE_FAST_INLINE Vec3<Scalar> point(const Mesh& mesh, Index v) {
   return {from_double<Scalar>(p[0]), from_double<Scalar>(p[1]), from_double<Scalar>(p[2])};
 }
 
-// a b - c d; for double with Kahan's fused multiply-add algorithm (at most 2 units), so that the normals of
-// needle and obtuse faces keep their accuracy.
-template <class Scalar>
-HINGE_FAST_INLINE Scalar kahan_difference(const Scalar& a, const Scalar& b, const Scalar& c, const Scalar& d) {
-  if constexpr (std::is_same_v<Scalar, double>) {
-    const double cd = c * d;
-    return std::fma(a, b, -cd) + std::fma(-c, d, cd);
-  } else {
-    return a * b - c * d;
-  }
-}
-
 // The face pass for faces [begin, end): n and 1 / 2A (Algorithm 2, line 8); flags a face whose area the
 // filter cannot certify nonzero (or that is not finite) for the exact check (suspect[f] is written for
-// every face: 0 or 1, so the flags need no clearing before the pass).
+// every face: 0 or 1, so the flags need no clearing before the pass). In Scalar itself; double has its own,
+// in double-double (src/face_pass_lanes.hpp).
 template <class Scalar>
 HINGE_FAST_INLINE void face_pass_body(const Mesh& mesh, const Pattern& pattern, std::size_t begin, std::size_t end,
                                       std::array<Scalar, 4>* face, char* suspect) {
@@ -251,14 +240,13 @@ HINGE_FAST_INLINE void face_pass_body(const Mesh& mesh, const Pattern& pattern, 
     }
     const Vec3<Scalar> x0 = point<Scalar>(mesh, F.v[0]), x1 = point<Scalar>(mesh, F.v[1]), x2 = point<Scalar>(mesh, F.v[2]);
     const Vec3<Scalar> a = vsub(x1, x0), b = vsub(x2, x0);
-    const Vec3<Scalar> N{kahan_difference(a[1], b[2], a[2], b[1]), kahan_difference(a[2], b[0], a[0], b[2]),
-                         kahan_difference(a[0], b[1], a[1], b[0])};
+    const Vec3<Scalar> N{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     const Scalar area2 = sqrt(vdot(N, N));
     const Scalar inv = Scalar(1) / area2;
     face[f] = {N[0] * inv, N[1] * inv, N[2] * inv, inv};
     // Certified nonzero when some component exceeds its error bound: 2 roundings in each difference,
-    // one in each product, Kahan's two: 8 units of the permanent is generous (only a flag: the exact
-    // check follows).
+    // one in each product and the subtraction: 8 units of the permanent is generous (only a flag: the
+    // exact check follows).
     bool certain = false;
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;

@@ -106,19 +106,22 @@ HINGE_FAST_INLINE DoubleDoubleOf<L> operator*(const DoubleDoubleOf<L>& a, const 
   const DoubleDoubleOf<L> p = two_prod(a.hi, b.hi);
   return fast_two_sum(p.hi, p.lo + fused(a.hi, b.lo, a.lo * b.hi));
 }
-// 1 / sqrt(a) from an estimate y with a relative error of a few units of 2^-53: y' = y + y (1 - a y^2) / 2,
-// relative error ~2^-104 (Newton's step squares the error).
+// Newton's step for 1 / sqrt(a) from an estimate y (relative error a few units of 2^-53), as the factor
+// it applies: 1 / sqrt(a) = y (1 + e/2) with relative error of order e^2 ~ 2^-104, e = 1 - a y^2. Returns
+// e/2 (y^2 exact, two_prod; a y^2 - 1 by a fused multiply-add, exact but for its last rounding). Kept as
+// a factor, the step folds into the products that use 1 / sqrt(a) instead of adding its latency.
 template <class L>
-HINGE_FAST_INLINE DoubleDoubleOf<L> rsqrt_step(const DoubleDoubleOf<L>& a, const L& y) {
-  const DoubleDoubleOf<L> ay2 = a * two_prod(y, y);
-  const L e = (splat<L>(1) - ay2.hi) - ay2.lo;
-  return fast_two_sum(y, y * e * 0.5);
+HINGE_FAST_INLINE L rsqrt_correction(const DoubleDoubleOf<L>& a, const L& y) {
+  const DoubleDoubleOf<L> y2 = two_prod(y, y);
+  return -((fused(a.hi, y2.hi, -splat<L>(1)) + a.hi * y2.lo) + a.lo * y2.hi) * 0.5;
 }
-// 1 / sqrt(a), from the double result y = 1 / sqrt(a.hi).
+// c y (1 + h), for h small (rsqrt_correction): c.hi y exactly, the rest to first order.
 template <class L>
-HINGE_FAST_INLINE DoubleDoubleOf<L> rsqrt(const DoubleDoubleOf<L>& a) {
-  return rsqrt_step(a, splat<L>(1) / root(a.hi));
+HINGE_FAST_INLINE DoubleDoubleOf<L> times_corrected(const DoubleDoubleOf<L>& c, const L& y, const L& h) {
+  const DoubleDoubleOf<L> p = two_prod(c.hi, y);
+  return fast_two_sum(p.hi, (p.lo + c.lo * y) + p.hi * h);
 }
+
 // The sign of det[e0, x0 - x1, x1 - x3] (the sign of theta, proofs/sign-convention.md) from the
 // rounded differences p = fl(x2 - x1), q = fl(x0 - x1), r = fl(x3 - x1), each possibly times one exact
 // power of two: -1, 0 or +1 when certified, kUndecided otherwise (then hinge_orientation_exact decides).
