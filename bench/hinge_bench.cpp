@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <optional>
@@ -64,7 +65,8 @@ void hinge_reference(benchmark::State& state) {
 
 // ---- a whole cloth -----------------------------------------------------------------------------------
 
-// One grid at a time (the largest needs about 1.3 GB with its Hessian): rebuilt when the size changes.
+// Every grid is kept once built (the repetitions of the sizes are interleaved: main), about 1.5 GB with
+// the Hessians up to 1001^2.
 struct Cloth {
   int n = 0;
   Mesh rest, deformed;
@@ -74,10 +76,11 @@ struct Cloth {
   reference::MeshDerivatives<double> out;
 };
 Cloth& cloth_of(int n) {
-  static Cloth c;
-  if (c.n != n) {
-    c.assembler.reset();
-    c.out = {};
+  static std::map<int, std::unique_ptr<Cloth>> clothes;
+  std::unique_ptr<Cloth>& slot = clothes[n];
+  if (!slot) {
+    slot = std::make_unique<Cloth>();
+    Cloth& c = *slot;
     c.n = n;
     c.rest = cloth(n, 1);
     c.deformed = cloth(n, 2);
@@ -85,7 +88,7 @@ Cloth& cloth_of(int n) {
     c.assembler = std::make_unique<fast::Assembler<double>>(c.topology);
     c.coefficients = c.assembler->rest_state(c.rest, {reference::Model::tan, 1.0, 0}, 2);
   }
-  return c;
+  return *slot;
 }
 
 void mesh_fast(benchmark::State& state) {
@@ -229,6 +232,18 @@ int main(int argc, char** argv) {
           ->UseRealTime()
           ->Unit(benchmark::kMillisecond);
   }
+  // Defaults, unless given: 5 repetitions, interleaved in random order, so that the clock's drift (this
+  // machine's moves by ~10% within an hour) falls on every size alike and not on the fitted k.
+  std::vector<char*> args(argv, argv + argc);
+  auto given = [&](const char* flag) {
+    return std::any_of(args.begin(), args.end(), [flag](const char* a) { return std::strncmp(a, flag, std::strlen(flag)) == 0; });
+  };
+  static char repetitions[] = "--benchmark_repetitions=5", interleave[] = "--benchmark_enable_random_interleaving=true";
+  if (!given("--benchmark_repetitions")) args.push_back(repetitions);
+  if (!given("--benchmark_enable_random_interleaving")) args.push_back(interleave);
+  argc = static_cast<int>(args.size());
+  args.push_back(nullptr);
+  argv = args.data();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   Capture capture;
