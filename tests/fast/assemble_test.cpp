@@ -183,39 +183,6 @@ Mesh shuffled(const Mesh& m, unsigned seed) {
   return out;
 }
 
-TEST(Assemble, AnUntameCoordinateGivesTheSameBits) {
-  // The mesh alone (every coordinate tame: the sign filter skips its guard's test) and with one more
-  // vertex, in no face, at 1e-300 (not tame: the guarded filter everywhere). Bent, exactly flat (every
-  // determinant 0) and nearly flat (the filter undecided) grids; theta-based and tan-based energies.
-  for (int kind = 0; kind < 3; ++kind) {
-    Mesh rest = test::bumpy_grid(13, 70), deformed = test::bumpy_grid(13, 71);
-    for (auto& x : deformed.vertices) {
-      if (kind == 1) x[2] = 0;
-      if (kind == 2) x[2] *= 1e-17;
-    }
-    Mesh rest_untame = rest, deformed_untame = deformed;
-    rest_untame.vertices.push_back({1e-300, 0, 0});
-    deformed_untame.vertices.push_back({1e-300, 0, 0});
-    const Topology t = build_topology(rest), t_untame = build_topology(rest_untame);
-    for (Model model : {Model::tan, Model::willmore}) {
-      const std::string what = "grid " + std::to_string(kind) + " " + std::string(reference::model_name(model));
-      Assembler<double> a(t), b(t_untame);
-      const auto c = a.rest_state(rest, {model, 1.0, 0}, 1);
-      const auto c_untame = b.rest_state(rest_untame, {model, 1.0, 0}, 1);
-      EXPECT_TRUE(a.coordinates_tame()) << what;
-      EXPECT_FALSE(b.coordinates_tame()) << what;
-      Bytes tame(a.evaluate(deformed, c, model, reference::want_all, 2));
-      Bytes untame(b.evaluate(deformed_untame, c_untame, model, reference::want_all, 2));
-      EXPECT_TRUE(a.coordinates_tame()) << what;
-      EXPECT_FALSE(b.coordinates_tame()) << what;
-      ASSERT_EQ(untame.gradient.size(), tame.gradient.size() + 3) << what;
-      for (std::size_t k = tame.gradient.size(); k < untame.gradient.size(); ++k) EXPECT_EQ(untame.gradient[k], 0.0) << what;
-      untame.gradient.resize(tame.gradient.size());
-      expect_same_bytes(tame, untame, what);
-    }
-  }
-}
-
 TEST(Assemble, ThreadCountsOneToSevenGiveIdenticalBytes) {
   // Meshes with enough faces for up to 7 column ranges (detail::kFacesPerPart), one in row order and one
   // renumbered at random; each thread count evaluated into a fresh output (a new matrix, its row indices

@@ -134,9 +134,6 @@ class Assembler {
 
   const Pattern& pattern() const { return pattern_; }
   const Topology& topology() const { return *topology_; }
-  // Whether every coordinate of the last mesh evaluated is tame (exact.hpp): the sign filter then skips
-  // its guard's test (the same decisions either way).
-  bool coordinates_tame() const { return tame_; }
 
   // Algorithm 1 on the rest mesh: a = 3 |e_bar|^2 / A_bar, theta_bar, phi_bar = 2 tan(theta_bar / 2)
   // (eq. 12), k and k_d / dt from `parameters`, per hinge in Topology::hinges order. Throws InputError for
@@ -188,7 +185,6 @@ class Assembler {
   std::vector<Scalar> psi1_, psi2_;          // per hinge: psi', psi''
   std::vector<Scalar> chunk_energy_;
   std::vector<char> suspect_face_, suspect_hinge_;
-  bool tame_ = false;  // every coordinate of the mesh of the last face pass is tame (exact.hpp)
   bool want_theta_ = true;
   Model last_model_ = Model::tan;
   const std::vector<HingeCoefficients<Scalar>>* last_coefficients_ = nullptr;
@@ -264,11 +260,11 @@ HINGE_FAST_INLINE void face_pass_body(const Mesh& mesh, const Pattern& pattern, 
 }
 
 // The bend angle of hinge h from the face normals: tan(theta/2) by eq. (12), theta = 2 atan2(|n - n~|,
-// |n + n~|) (Fig. 3) when `want_theta`, the sign from the filter or, on the folded side, exactly. `tame`:
-// every coordinate of the mesh is tame (exact.hpp), so the filter's guard holds without its test.
+// |n + n~|) (Fig. 3) when `want_theta`; the sign of theta on the flat side (n . n~ >= 0) that of the
+// computed determinant, on the folded side the filter's or, when it cannot decide, the exact one.
 template <class Scalar>
 HINGE_FAST_INLINE reference::BendAngle<Scalar> bend_angle(const Mesh& mesh, const Hinge& h, const std::array<Scalar, 4>& nu,
-                                                          const std::array<Scalar, 4>& nl, bool want_theta, bool tame) {
+                                                          const std::array<Scalar, 4>& nl, bool want_theta) {
   using std::atan2;
   using std::sqrt;
   const Vec3<Scalar> minus{nu[0] - nl[0], nu[1] - nl[1], nu[2] - nl[2]}, plus{nu[0] + nl[0], nu[1] + nl[1], nu[2] + nl[2]};
@@ -283,12 +279,15 @@ HINGE_FAST_INLINE reference::BendAngle<Scalar> bend_angle(const Mesh& mesh, cons
     q[k] = x0[k] - x1[k];
     r[k] = x3[k] - x1[k];
   }
-  double computed;
-  int sign = tame ? orientation_filter<false>(p, q, r, computed) : orientation_filter<true>(p, q, r, computed);
   const bool folded_side = nu[0] * nl[0] + nu[1] * nl[1] + nu[2] * nl[2] < 0;
-  if (sign == kUndecided) {
-    if (folded_side) sign = hinge_orientation_exact(x0, x1, x2, x3);
-    else sign = computed > 0 ? 1 : computed < 0 ? -1 : 0;
+  int sign;
+  if (!folded_side) {  // the sign of the computed determinant, which is the filter's answer when it has one
+    const double computed = hinge_determinant(p, q, r);
+    sign = computed > 0 ? 1 : computed < 0 ? -1 : 0;
+  } else {
+    double computed;
+    sign = orientation_filter(p, q, r, computed);
+    if (sign == kUndecided) sign = hinge_orientation_exact(x0, x1, x2, x3);
   }
   reference::BendAngle<Scalar> b;
   if (sign == 0) {  // coplanar: theta is 0 or pi
@@ -328,6 +327,20 @@ HINGE_FAST_INLINE void accumulate(Scalar* p, const Column<Scalar>& v) {
     std::memcpy(&x, p, sizeof x);
     x += v;
     std::memcpy(p, &x, sizeof x);
+  }
+}
+// p[0..2] += s g: a vertex's three gradient entries (the next one may be another thread's: not touched).
+template <class Scalar>
+HINGE_FAST_INLINE void add_scaled(Scalar* p, const Scalar& s, const Vec3<Scalar>& g) {
+  if constexpr (std::is_same_v<Column<Scalar>, Triple<Scalar>>) {
+    for (int c = 0; c < 3; ++c) p[c] += s * g[c];
+  } else {  // the same operations, x and y in one vector
+    typedef Scalar Pair __attribute__((vector_size(2 * sizeof(Scalar))));
+    Pair x;
+    std::memcpy(&x, p, sizeof x);
+    x += Pair{s, s} * Pair{g[0], g[1]};
+    std::memcpy(p, &x, sizeof x);
+    p[2] += s * g[2];
   }
 }
 // The block with columns B into the off-diagonal block `base` of column vertex b: added, or stored when
@@ -437,8 +450,7 @@ HINGE_FAST_INLINE void assembly_pass_body(const Mesh& mesh, const Pattern& patte
       if (flags.gradient) {
         const Scalar p1 = psi1[h];
         for (int a = 0; a < 4; ++a)
-          if (mine(v[a]))
-            for (int cc = 0; cc < 3; ++cc) gradient[3 * v[a] + cc] += p1 * g[a][cc];  // line 17, eq. (2)
+          if (mine(v[a])) add_scaled(gradient + 3 * static_cast<std::size_t>(v[a]), p1, g[a]);  // line 17, eq. (2)
       }
       if (flags.hessian) {  // lines 18-19
         const Scalar p2 = psi2[h];
@@ -518,26 +530,20 @@ constexpr std::size_t kFacesPerPart = 1024;
 
 // The face pass; it also compares the mesh's faces with the topology's, chunk by chunk (check_mesh_size
 // has checked the counts, so the pass reads only valid vertices either way), and throws the same
-// InputError as check_mesh_size if they differ; and it finds whether every coordinate is tame (tame_),
-// each chunk of faces checking its share of the vertices.
+// InputError as check_mesh_size if they differ.
 template <class Scalar>
 void Assembler<Scalar>::face_pass(const Mesh& mesh, int threads, const char* what) {
-  const std::size_t count = topology_->faces.size(), points = mesh.vertices.size();
+  const std::size_t count = topology_->faces.size();
   face_.resize(count);
   suspect_face_.resize(count);  // every flag is written by the pass
-  std::atomic<bool> mismatch{false}, wild{count == 0};
+  std::atomic<bool> mismatch{false};
   detail::for_chunks(team_, count, detail::kFaceChunk, threads, [&](std::size_t begin, std::size_t end, std::size_t) {
-    bool tame = true;
-    for (std::size_t v = begin * points / count; v < end * points / count; ++v)
-      for (double c : mesh.vertices[v]) tame &= tame_coordinate(c);
-    if (!tame) wild.store(true, std::memory_order_relaxed);
     detail::Kernels<Scalar>::faces(mesh, pattern_, begin, end, face_.data(), suspect_face_.data());
     if (!std::equal(mesh.faces.begin() + static_cast<std::ptrdiff_t>(begin), mesh.faces.begin() + static_cast<std::ptrdiff_t>(end),
                     topology_->faces.begin() + static_cast<std::ptrdiff_t>(begin)))
       mismatch.store(true, std::memory_order_relaxed);
   });
   if (mismatch.load()) mesh_mismatch(what);
-  tame_ = !wild.load();
 }
 
 // per_hinge(h, bend angle) returns the hinge's energy; an exception flags the hinge for report(). Returns
@@ -563,7 +569,7 @@ bool Assembler<Scalar>::hinge_pass(const Mesh& mesh, int threads, bool skip_susp
       }
       try {
         energy += per_hinge(static_cast<Index>(h), detail::bend_angle<Scalar>(mesh, hg, face_[hg.upper], face_[hg.lower],
-                                                                            want_theta_, tame_));
+                                                                            want_theta_));
       } catch (const std::exception&) {
         suspect_hinge_[h] = 1;
         any = true;
@@ -621,7 +627,7 @@ void Assembler<Scalar>::report(const Mesh& mesh, Purpose purpose) {
     // The faces are sound (a false alarm of the area filter): the angle is evaluated, and the energy's
     // own objection, if any, is the error.
     const reference::BendAngle<Scalar> b =
-        detail::bend_angle<Scalar>(mesh, hg, face_[hg.upper], face_[hg.lower], true, tame_);
+        detail::bend_angle<Scalar>(mesh, hg, face_[hg.upper], face_[hg.lower], true);
     if (purpose == Purpose::evaluate) {
       try {
         reference::psi(last_model_, (*last_coefficients_)[h], b);

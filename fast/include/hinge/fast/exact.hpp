@@ -128,43 +128,39 @@ HINGE_FAST_INLINE DoubleDoubleOf<L> times_corrected(const DoubleDoubleOf<L>& c, 
 // This is the filter of reference/src/predicates.cpp (bound fl(9 u P'), guard [2^-300, 2^300]), with the
 // same proof; `computed` receives the (uncertified) hinge determinant.
 constexpr int kUndecided = 2;
+// The hinge determinant -det[p, q, r] = -sum_k p_k (q_i r_j - q_j r_i), (i, j) = (k + 1, k + 2) mod 3, in
+// this order: the filter's `computed`, bit for bit.
+HINGE_FAST_INLINE double hinge_determinant(const double p[3], const double q[3], const double r[3]) {
+  double det = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    det += p[k] * (q[i] * r[j] - q[j] * r[i]);
+  }
+  return -det;
+}
 // Without branches: the sign of theta is data (random in a benchmark, alternating on a mesh), and a
 // mispredicted branch in the middle of a kernel discards the work that followed it.
-// kGuarded = false skips the guard's test: only for differences known to pass it (tame_coordinate).
-template <bool kGuarded = true>
+// When it decides a nonzero sign, that sign is the sign of `computed` (the bound is positive), and when it
+// decides 0 (perm == 0 inside the guard), `computed` is 0: on the flat side, where the mesh path takes the
+// sign of `computed` when the filter cannot decide (assemble.hpp), that sign is the answer either way.
 HINGE_FAST_INLINE int orientation_filter(const double p[3], const double q[3], const double r[3], double& computed) {
   constexpr double lo = 0x1p-300, hi = 0x1p300, u = 0x1p-53;
   bool guarded = true;
-  double det = 0.0, perm = 0.0;
+  double perm = 0.0;
   for (int k = 0; k < 3; ++k) {
     const double a = std::fabs(p[k]), b = std::fabs(q[k]), c = std::fabs(r[k]);
-    if constexpr (kGuarded)
-      guarded &= ((a == 0.0) | ((a >= lo) & (a <= hi))) & ((b == 0.0) | ((b >= lo) & (b <= hi))) &
-                 ((c == 0.0) | ((c >= lo) & (c <= hi)));
+    guarded &= ((a == 0.0) | ((a >= lo) & (a <= hi))) & ((b == 0.0) | ((b >= lo) & (b <= hi))) &
+               ((c == 0.0) | ((c >= lo) & (c <= hi)));
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const double m1 = q[i] * r[j], m2 = q[j] * r[i];
-    det += p[k] * (m1 - m2);
-    perm += a * (std::fabs(m1) + std::fabs(m2));
+    perm += a * (std::fabs(q[i] * r[j]) + std::fabs(q[j] * r[i]));
   }
-  computed = -det;  // the hinge determinant is -det[p, q, r]
+  computed = hinge_determinant(p, q, r);
+  const double det = -computed;
   const double bound = 9.0 * u * perm;
   const int negative = det > bound, positive = -det > bound;
   // perm == 0: every term is zero, so the determinant is exactly 0.
   const int decided = guarded & (negative | positive | (perm == 0.0));
   return decided ? positive - negative : kUndecided;
-}
-
-// Whether a coordinate is tame: 0, or of magnitude in [2^-200, 2^299]. The rounded difference of two tame
-// coordinates x, y is then 0 or of magnitude in [2^-252, 2^300], inside orientation_filter's guard
-// [2^-300, 2^300]: |x - y| <= |x| + |y| <= 2^300, and a power of two is a double, so rounding (monotone)
-// keeps fl(x - y) <= 2^300; a tame x is a multiple of 2^-252 (the unit in the last place of 2^-200, the
-// smallest nonzero magnitude allowed), so x != y gives |x - y| >= 2^-252 and again |fl(x - y)| >= 2^-252;
-// x == y gives an exact 0. NaN and infinities are not tame. On a mesh whose coordinates are all tame
-// (any mesh in practice) the filter runs without the guard's 27 comparisons and decides the same
-// (tests/fast/exact_test.cpp).
-HINGE_FAST_INLINE bool tame_coordinate(double x) {
-  const double a = std::fabs(x);
-  return (a == 0.0) | ((a >= 0x1p-200) & (a <= 0x1p299));
 }
 
 }  // namespace hinge::fast
