@@ -130,6 +130,7 @@ class Capture : public benchmark::ConsoleReporter {
   struct Result {
     double seconds = 0;  // median over repetitions
     double items = 0;    // per iteration
+    double spread = 0;   // (slowest - fastest) / median over the repetitions
   };
   std::map<std::string, std::vector<double>> times;
   std::map<std::string, double> items;
@@ -149,7 +150,7 @@ class Capture : public benchmark::ConsoleReporter {
     std::sort(t.begin(), t.end());
     const std::size_t m = t.size() / 2;
     const double median = t.size() % 2 ? t[m] : (t[m - 1] + t[m]) / 2;
-    return Result{median, items.at(name)};
+    return Result{median, items.at(name), (t.back() - t.front()) / median};
   }
 };
 
@@ -177,15 +178,15 @@ void summary(const Capture& c, const std::vector<int>& sides) {
   if (hf && hr)
     std::printf("per hinge: fast %.1f ns, reference %.1f ns, fast/reference %.3f\n", 1e9 * hf->seconds / 1024,
                 1e9 * hr->seconds / 1024, hf->seconds / hr->seconds);
-  std::printf("%7s %10s %10s %14s %14s %9s %14s %14s\n", "side", "vertices", "edges", "fast 1T ns/e", "fast 2T ns/e",
-              "speedup", "ref ns/edge", "fast/ref");
+  std::printf("%7s %10s %10s %14s %8s %14s %9s %14s %14s\n", "side", "vertices", "edges", "fast 1T ns/e", "spread",
+              "fast 2T ns/e", "speedup", "ref ns/edge", "fast/ref");
   std::vector<std::pair<double, double>> fit_all, fit_large, fit_paper, fit_ref;
   for (int n : sides) {
     const auto f1 = c.get(mesh_name("fast", n, 1)), f2 = c.get(mesh_name("fast", n, 2)),
                r = c.get(mesh_name("reference", n, 1));
     if (!f1) continue;
     const double vertices = double(n) * n, edges = f1->items;
-    std::printf("%7d %10.0f %10.0f %14.1f", n, vertices, edges, 1e9 * f1->seconds / edges);
+    std::printf("%7d %10.0f %10.0f %14.1f %7.0f%%", n, vertices, edges, 1e9 * f1->seconds / edges, 100 * f1->spread);
     if (f2) std::printf(" %14.1f %9.2f", 1e9 * f2->seconds / edges, f1->seconds / f2->seconds);
     else std::printf(" %14s %9s", "-", "-");
     if (r) std::printf(" %14.1f %14.3f\n", 1e9 * r->seconds / edges, f1->seconds / r->seconds);
