@@ -140,9 +140,10 @@ HINGE_FAST_INLINE double hinge_determinant(const double p[3], const double q[3],
 }
 // Without branches: the sign of theta is data (random in a benchmark, alternating on a mesh), and a
 // mispredicted branch in the middle of a kernel discards the work that followed it.
-// When it decides a nonzero sign, that sign is the sign of `computed` (the bound is positive), and when it
-// decides 0 (perm == 0 inside the guard), `computed` is 0: on the flat side, where the mesh path takes the
-// sign of `computed` when the filter cannot decide (assemble.hpp), that sign is the answer either way.
+// When it decides a nonzero sign, that sign is the sign of `computed` (|computed| exceeds a bound that is
+// not negative), and when it decides 0 (perm == 0 inside the guard: every term exactly 0), `computed` is 0.
+// So on the flat side, where the mesh path takes the sign of `computed` when the filter cannot decide
+// (assemble.hpp), that sign is the answer either way (tests/fast/exact_test.cpp).
 HINGE_FAST_INLINE int orientation_filter(const double p[3], const double q[3], const double r[3], double& computed) {
   constexpr double lo = 0x1p-300, hi = 0x1p300, u = 0x1p-53;
   bool guarded = true;
