@@ -61,14 +61,12 @@ HINGE_FAST_INLINE void face_pass_lanes(const Mesh& mesh, const Pattern& pattern,
     }
     const L inverse = y + y * half_e;
     std::memcpy(out[3], &inverse, sizeof inverse);
-    // The area is certainly nonzero where some component k of N exceeds the bound on its evaluation
-    // error: perm_k > 2^-900 and |N_k| > 2^-90 perm_k, perm_k = |a_i b_j| + |a_j b_i| (the per-hinge kernel's
-    // filter); both differences below are then positive. Otherwise the face is flagged for the exact check.
+    // The area is certainly nonzero where some component of N passes the filter (lanes.hpp,
+    // area_certainty, as in the per-hinge kernel). Otherwise the face is flagged for the exact check.
     L certain = L::broadcast(-1);
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const L perm = magnitude(a[i].hi * b[j].hi) + magnitude(a[j].hi * b[i].hi);
-      certain = larger(certain, smaller(perm - L::broadcast(0x1p-900), magnitude(N[k].hi) - perm * 0x1p-90));
+      certain = larger(certain, area_certainty(magnitude(a[i].hi * b[j].hi) + magnitude(a[j].hi * b[i].hi), N[k].hi));
     }
     std::memcpy(out[4], &certain, sizeof certain);
     for (std::size_t l = 0; l < count; ++l) {

@@ -251,14 +251,12 @@ HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, boo
   // a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 . e_0) / (l_0 2A)
   const L a = round_product(permute_dd<1, 3, 2, 3>(dots), K) * L::make(1, -1, -1, 0, 1, -1, -1, 0);
 
-  // Validity: each triangle's area is certainly nonzero when some component k of C exceeds the bound on
-  // its evaluation error (a few units of 2^-106 of perm_k = |f2_i f0_j| + |f2_j f0_i|; 2^-90 leaves a wide
-  // margin, and below 2^-900 the products' low parts may have underflowed): perm_k > 2^-900 and |C_k| >
-  // 2^-90 perm_k, that is where both differences below are positive (exactly: a difference of doubles has
-  // the sign of their comparison). Otherwise the caller decides exactly.
+  // Validity: each triangle's area is certainly nonzero when some component k of C passes the area
+  // filter (lanes.hpp, area_certainty) with perm_k = |f2_i f0_j| + |f2_j f0_i|. Otherwise the caller
+  // decides exactly.
   {
     const L perm = magnitude(f2_yzx.hi * f0_zxy.hi) + magnitude(f2_zxy.hi * f0_yzx.hi);
-    const L certain = largest_of_three(smaller(perm - L::broadcast(0x1p-900), magnitude(Cv.hi) - perm * 0x1p-90));
+    const L certain = largest_of_three(area_certainty(perm, Cv.hi));
     o.certain_upper = certain.lane(0) > 0;
     o.certain_lower = certain.lane(4) > 0;
   }

@@ -195,6 +195,15 @@ HINGE_FAST_INLINE L smaller(L a, L b) {
   else for (int k = 0; k < 2; ++k) r.h[k] = a.h[k] < b.h[k] ? a.h[k] : b.h[k];
   return r;
 }
+// The area filter of the double kernels: where a triangle's area is certainly nonzero, from a component
+// of its normal N computed in double-double (`component`, its high part) and perm = |a_i b_j| + |a_j b_i|
+// of that component: perm > 2^-900 (below, the products' low parts may have underflowed) and |N_k| >
+// 2^-90 perm (its evaluation error is a few units of 2^-106 perm: a wide margin). Positive there (a
+// difference of doubles has the sign of their comparison), not positive elsewhere.
+template <class L>
+HINGE_FAST_INLINE L area_certainty(L perm, L component) {
+  return smaller(perm - L::broadcast(0x1p-900), magnitude(component) - perm * 0x1p-90);
+}
 // The sum of the eight lanes, in a fixed order (NaN if any lane is).
 template <class L>
 HINGE_FAST_INLINE double lane_sum(L a) {
