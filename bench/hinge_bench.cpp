@@ -3,18 +3,20 @@
 //   mesh/{fast,reference}/n:N/threads:T    a whole n x n cloth: energy, gradient and Hessian (tan energy),
 //                                          rest state precomputed, the pattern built once (fast)
 //   pattern/n:N                            building the fast pattern (once per topology)
-// After the runs a summary prints ns per hinge and per interior edge, the ratio fast / reference, the
-// two-thread speedup and the exponent k of t = a n^k fitted by least squares in log-log (the paper's
-// section 7.3), n the number of vertices.
+// After the runs a summary prints ns (and cycles, from the clock read before and after) per hinge and per
+// interior edge, the ratio fast / reference, the two-thread speedup and the exponent k of t = a n^k fitted
+// by least squares in log-log (the paper's section 7.3), n the number of vertices.
 //
 // Environment: HINGE_BENCH_MAX (largest grid side, default 1001: 10^6 vertices), HINGE_BENCH_REFERENCE_MAX
 // (largest side for the reference, default 201: it builds 78 triplets per hinge).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstdint>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -172,21 +174,50 @@ std::string mesh_name(const char* method, int n, int threads) {
   return std::string("mesh/") + method + "/n:" + std::to_string(n) + "/threads:" + std::to_string(threads) + "/real_time";
 }
 
-void summary(const Capture& c, const std::vector<int>& sides) {
+// The processor's clock (GHz) as a chain of dependent one-cycle additions measures it, the median of five
+// runs of 0.1 s (x86-64 with GCC or Clang; 0 elsewhere). This machine's clock moves between about 3.1 and
+// 4.3 GHz from hour to hour, and every time in ns with it: cycles compare across runs, ns do not.
+double clock_ghz() {
+#if defined(__x86_64__) && defined(__GNUC__)
+  constexpr std::uint64_t kRounds = 100'000'000;  // four additions each
+  std::vector<double> ghz;
+  for (int r = 0; r < 5; ++r) {
+    std::uint64_t x = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::uint64_t i = 0; i < kRounds; ++i) asm volatile("add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0" : "+r"(x));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ghz.push_back(4e-9 * double(kRounds) / seconds);
+  }
+  std::sort(ghz.begin(), ghz.end());
+  return ghz[2];
+#else
+  return 0;
+#endif
+}
+
+void summary(const Capture& c, const std::vector<int>& sides, double ghz_before, double ghz_after) {
   std::printf("\n== summary (double; real time per iteration, median over repetitions) ==\n");
+  const double ghz = (ghz_before + ghz_after) / 2;  // cycles below at the mean of the two readings
+  if (ghz > 0) std::printf("clock: %.2f GHz before the runs, %.2f GHz after (dependent additions)\n", ghz_before, ghz_after);
   const auto hf = c.get("hinge/fast"), hr = c.get("hinge/reference");
-  if (hf && hr)
-    std::printf("per hinge: fast %.1f ns, reference %.1f ns, fast/reference %.3f\n", 1e9 * hf->seconds / 1024,
+  if (hf && hr) {
+    std::printf("per hinge: fast %.1f ns, reference %.1f ns, fast/reference %.3f", 1e9 * hf->seconds / 1024,
                 1e9 * hr->seconds / 1024, hf->seconds / hr->seconds);
-  std::printf("%7s %10s %10s %14s %8s %14s %9s %14s %14s\n", "side", "vertices", "edges", "fast 1T ns/e", "spread",
-              "fast 2T ns/e", "speedup", "ref ns/edge", "fast/ref");
+    if (ghz > 0) std::printf(" (fast %.0f cycles)", ghz * 1e9 * hf->seconds / 1024);
+    std::printf("\n");
+  }
+  std::printf("%7s %10s %10s %14s %10s %8s %14s %9s %14s %14s\n", "side", "vertices", "edges", "fast 1T ns/e",
+              "cycles/e", "spread", "fast 2T ns/e", "speedup", "ref ns/edge", "fast/ref");
   std::vector<std::pair<double, double>> fit_all, fit_large, fit_paper, fit_ref;
   for (int n : sides) {
     const auto f1 = c.get(mesh_name("fast", n, 1)), f2 = c.get(mesh_name("fast", n, 2)),
                r = c.get(mesh_name("reference", n, 1));
     if (!f1) continue;
     const double vertices = double(n) * n, edges = f1->items;
-    std::printf("%7d %10.0f %10.0f %14.1f %7.0f%%", n, vertices, edges, 1e9 * f1->seconds / edges, 100 * f1->spread);
+    std::printf("%7d %10.0f %10.0f %14.1f", n, vertices, edges, 1e9 * f1->seconds / edges);
+    if (ghz > 0) std::printf(" %10.0f", ghz * 1e9 * f1->seconds / edges);
+    else std::printf(" %10s", "-");
+    std::printf(" %7.0f%%", 100 * f1->spread);
     if (f2) std::printf(" %14.1f %9.2f", 1e9 * f2->seconds / edges, f1->seconds / f2->seconds);
     else std::printf(" %14s %9s", "-", "-");
     if (r) std::printf(" %14.1f %14.3f\n", 1e9 * r->seconds / edges, f1->seconds / r->seconds);
@@ -247,9 +278,10 @@ int main(int argc, char** argv) {
   argv = args.data();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  const double ghz_before = clock_ghz();
   Capture capture;
   benchmark::RunSpecifiedBenchmarks(&capture);
-  summary(capture, sides);
+  summary(capture, sides, ghz_before, clock_ghz());
   benchmark::Shutdown();
   return 0;
 }
