@@ -1,5 +1,6 @@
 // Google Benchmark programs for hinge::fast against hinge::reference (bench/README.md):
 //   hinge/{fast,reference}                 one hinge: theta, grad theta, Hess theta (double)
+//   hinge/fast_many                        the same 1024 hinges in one call (a span)
 //   mesh/{fast,reference}/n:N/threads:T    a whole n x n cloth: energy, gradient and Hessian (tan energy),
 //                                          rest state precomputed, the pattern built once (fast)
 //   pattern/n:N                            building the fast pattern (once per topology)
@@ -52,6 +53,18 @@ void hinge_fast(benchmark::State& state) {
       auto d = fast::hinge_derivatives<double>(x);
       benchmark::DoNotOptimize(d);
     }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+}
+
+// The same hinges in one call (hinge_derivatives over a span: with AVX-512 two at a time).
+void hinge_fast_many(benchmark::State& state) {
+  const auto& hs = bench_hinges();
+  std::vector<fast::HingeDerivatives<double>> out(hs.size());
+  for (auto _ : state) {
+    fast::hinge_derivatives<double>(hs, out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
 }
 
@@ -199,11 +212,17 @@ void summary(const Capture& c, const std::vector<int>& sides, double ghz_before,
   std::printf("\n== summary (double; real time per iteration, median over repetitions) ==\n");
   const double ghz = (ghz_before + ghz_after) / 2;  // cycles below at the mean of the two readings
   if (ghz > 0) std::printf("clock: %.2f GHz before the runs, %.2f GHz after (dependent additions)\n", ghz_before, ghz_after);
-  const auto hf = c.get("hinge/fast"), hr = c.get("hinge/reference");
+  const auto hf = c.get("hinge/fast"), hm = c.get("hinge/fast_many"), hr = c.get("hinge/reference");
   if (hf && hr) {
     std::printf("per hinge: fast %.1f ns, reference %.1f ns, fast/reference %.3f", 1e9 * hf->seconds / 1024,
                 1e9 * hr->seconds / 1024, hf->seconds / hr->seconds);
     if (ghz > 0) std::printf(" (fast %.0f cycles)", ghz * 1e9 * hf->seconds / 1024);
+    std::printf("\n");
+  }
+  if (hm && hr) {
+    std::printf("per hinge, 1024 in one call: fast %.1f ns, fast/reference %.3f", 1e9 * hm->seconds / 1024,
+                hm->seconds / hr->seconds);
+    if (ghz > 0) std::printf(" (%.0f cycles)", ghz * 1e9 * hm->seconds / 1024);
     std::printf("\n");
   }
   std::printf("%7s %10s %10s %14s %10s %8s %14s %9s %14s %14s\n", "side", "vertices", "edges", "fast 1T ns/e",
@@ -248,6 +267,7 @@ int main(int argc, char** argv) {
   if (largest > 1001) sides.push_back(largest);
 
   benchmark::RegisterBenchmark("hinge/fast", hinge_fast);
+  benchmark::RegisterBenchmark("hinge/fast_many", hinge_fast_many);
   benchmark::RegisterBenchmark("hinge/reference", hinge_reference);
   for (int n : sides) {
     benchmark::RegisterBenchmark("pattern", pattern_build)->ArgNames({"n"})->Args({n})->Unit(benchmark::kMillisecond);

@@ -139,7 +139,8 @@ HINGE_FAST_INLINE void lanes_hessian(const L n[3], const L nv, const L q[3], con
 
 // What the vector work leaves to the caller: the checks it could not decide, and theta's inputs.
 struct LanesOutcome {
-  enum Status { computed, not_finite, zero_hinge_edge, rescale } status = computed;
+  // alone: (two hinges at once) one of them needs a rare path, so both are to be evaluated one by one
+  enum Status { computed, not_finite, zero_hinge_edge, rescale, alone } status = computed;
   bool certain_upper = false, certain_lower = false;  // the filter certified the area nonzero
   bool fast_range = false;                            // in_range() (hinge_kernel.hpp)
   bool folded = false;                                // n . n~ < 0
@@ -149,60 +150,83 @@ struct LanesOutcome {
   double tan_half_theta = 0;                          // |tan(theta / 2)|
 };
 
-// The vector work of the kernel: grad theta and (if asked) Hess theta into `out`, the rest into the
-// outcome, which evaluate() (hinge_kernel_double.cpp) completes. There is no call in it (the calls
-// to the exact predicates and atan2 are the caller's): GCC spills every vector register of a function
-// around any call in it. `kRescaled`: the edges are first brought to M in [1, 2) by a power of two
-// (the rare path, the outcome `rescale` of the common one: M outside [2^-200, 2^200], as in the generic
-// kernel, hinge_kernel.hpp, and the same numbers).
-template <class L, bool kRescaled>
-HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
-  using D = DoubleDoubleOf<L>;
+// pick12 (lanes.hpp) of each hinge's coordinates: W is L (one hinge) or Twice<L> (two).
+template <class L, class W, int i0, int i1, int i2, int i3, int i4, int i5, int i6, int i7>
+HINGE_FAST_INLINE W pick12_of(const double* const* y) {
+  if constexpr (std::is_same_v<W, L>) return pick12<L, i0, i1, i2, i3, i4, i5, i6, i7>(y[0]);
+  else return {pick12<L, i0, i1, i2, i3, i4, i5, i6, i7>(y[0]), pick12<L, i0, i1, i2, i3, i4, i5, i6, i7>(y[1])};
+}
+
+// The vector work of the kernel on B hinges (1, or 2 side by side: lanes.hpp, Twice): for each, grad theta
+// and (if asked) Hess theta into out[b], the rest into the outcome o[b], which evaluate()
+// (hinge_kernel_double.cpp) completes. There is no call in it (the calls to the exact predicates and atan2
+// are the caller's): GCC spills every vector register of a function around any call in it. `kRescaled`
+// (B = 1): the edges are first brought to M in [1, 2) by a power of two (the rare path, the outcome
+// `rescale` of the common one: M outside [2^-200, 2^200], as in the generic kernel, hinge_kernel.hpp, and
+// the same numbers). With B = 2, a hinge that needs a rare path (not finite, x1 == x2, rescaled) makes
+// both outcomes `alone`, and nothing is written.
+template <class L, bool kRescaled, int B = 1>
+HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, bool want_hessian,
+                                    HingeDerivatives<double>* const* out, LanesOutcome* o) {
+  static_assert(B == 1 || (B == 2 && !kRescaled));
+  using W = std::conditional_t<B == 1, L, Twice<L>>;
+  using D = DoubleDoubleOf<W>;
   using V = Vec<D>;  // x, y, z
-  LanesOutcome o;
+  auto each = [](auto&& f) {  // f(h) for h = 0 .. B - 1, a constant
+    f(std::integral_constant<int, 0>{});
+    if constexpr (B == 2) f(std::integral_constant<int, 1>{});
+  };
+  auto rare = [&](int h, LanesOutcome::Status status) {  // true: return now
+    if constexpr (B == 1) o[h].status = status;
+    else o[0].status = o[1].status = LanesOutcome::alone;
+    return true;
+  };
+  const double* x[B];
+  for (int h = 0; h < B; ++h) {
+    o[h] = LanesOutcome{};
+    x[h] = xs[h]->data();
+  }
   {
-    const L v0 = pick12<L, 0, 1, 2, 3, 4, 5, 6, 7>(x.data()), v1 = pick12<L, 4, 5, 6, 7, 8, 9, 10, 11>(x.data());
-    if (!(lane_sum(v0 * 0.0 + v1 * 0.0) == 0)) {  // NaN where a coordinate is not finite
-      o.status = LanesOutcome::not_finite;
-      return o;
-    }
+    const W v0 = pick12_of<L, W, 0, 1, 2, 3, 4, 5, 6, 7>(x), v1 = pick12_of<L, W, 4, 5, 6, 7, 8, 9, 10, 11>(x);
+    const W probe = v0 * 0.0 + v1 * 0.0;  // NaN where a coordinate is not finite
+    bool stop = false;
+    each([&](auto h) { stop = stop || (!(lane_sum(part<h>(probe)) == 0) && rare(h, LanesOutcome::not_finite)); });
+    if (stop) return;
   }
-  if (x[3] == x[6] && x[4] == x[7] && x[5] == x[8]) {
-    o.status = LanesOutcome::zero_hinge_edge;
-    return o;
-  }
+  for (int h = 0; h < B; ++h)
+    if (x[h][3] == x[h][6] && x[h][4] == x[h][7] && x[h][5] == x[h][8] && rare(h, LanesOutcome::zero_hinge_edge)) return;
 
   // The edges, exactly (two_diff): upper f0, f1, f2, f0 | lower f0, f1, f2, f0.
-  auto edges = [](const double* y, V& F) {
-    F[0] = two_diff(pick12<L, 6, 0, 3, 6, 6, 9, 3, 6>(y), pick12<L, 3, 6, 0, 3, 3, 6, 9, 3>(y));
-    F[1] = two_diff(pick12<L, 7, 1, 4, 7, 7, 10, 4, 7>(y), pick12<L, 4, 7, 1, 4, 4, 7, 10, 4>(y));
-    F[2] = two_diff(pick12<L, 8, 2, 5, 8, 8, 11, 5, 8>(y), pick12<L, 5, 8, 2, 5, 5, 8, 11, 5>(y));
+  auto edges = [](const double* const* y, V& F) {
+    F[0] = two_diff(pick12_of<L, W, 6, 0, 3, 6, 6, 9, 3, 6>(y), pick12_of<L, W, 3, 6, 0, 3, 3, 6, 9, 3>(y));
+    F[1] = two_diff(pick12_of<L, W, 7, 1, 4, 7, 7, 10, 4, 7>(y), pick12_of<L, W, 4, 7, 1, 4, 4, 7, 10, 4>(y));
+    F[2] = two_diff(pick12_of<L, W, 8, 2, 5, 8, 8, 11, 5, 8>(y), pick12_of<L, W, 5, 8, 2, 5, 5, 8, 11, 5>(y));
   };
-  auto largest_component = [](const V& F) {  // M (infinite when a difference overflowed)
-    return largest_lane(larger(larger(magnitude(F[0].hi), magnitude(F[1].hi)), magnitude(F[2].hi)));
+  double largest[B];  // M (infinite when a difference overflowed)
+  auto largest_component = [&](const V& F) {
+    const W m = larger(larger(magnitude(F[0].hi), magnitude(F[1].hi)), magnitude(F[2].hi));
+    each([&](auto h) { largest[h] = largest_lane(part<h>(m)); });
   };
   V F;
-  edges(x.data(), F);
-  double largest = largest_component(F);
+  edges(x, F);
+  largest_component(F);
   if constexpr (!kRescaled) {
-    if (!(largest <= 0x1p200 && largest >= 0x1p-200)) [[unlikely]] {
-      o.status = LanesOutcome::rescale;
-      return o;
-    }
+    for (int h = 0; h < B; ++h)
+      if (!(largest[h] <= 0x1p200 && largest[h] >= 0x1p-200) && rare(h, LanesOutcome::rescale)) [[unlikely]] return;
   } else {
-    if (!(largest <= std::numeric_limits<double>::max())) {
+    if (!(largest[0] <= std::numeric_limits<double>::max())) {
       std::array<double, 12> quarter;
-      for (int i = 0; i < 12; ++i) quarter[i] = x[i] * 0x1p-4;
-      edges(quarter.data(), F);
-      o.exponent = 4;
-      largest = largest_component(F);
+      for (int i = 0; i < 12; ++i) quarter[i] = x[0][i] * 0x1p-4;
+      const double* q[1] = {quarter.data()};
+      edges(q, F);
+      o[0].exponent = 4;
+      largest_component(F);
     }
-    const int shift = std::ilogb(largest);  // largest > 0: x1 != x2
+    const int shift = std::ilogb(largest[0]);  // largest > 0: x1 != x2
     for (int c = 0; c < 3; ++c) F[c] = {scaled_by_power_of_two(F[c].hi, -shift), scaled_by_power_of_two(F[c].lo, -shift)};
-    o.exponent += shift;
-    largest = largest_component(F);  // in [1, 2)
+    o[0].exponent += shift;
+    largest_component(F);  // in [1, 2)
   }
-  const double P2 = inverse_square_power_of_two(largest);
 
   // Quantities with one vector per triangle hold its components in lanes 0 .. 2 of the triangle's half
   // (lane 3: don't care): f0 and f2 rotated (for cross products), C = f2 x f0, the normals.
@@ -220,9 +244,12 @@ HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, boo
   const D dots = dot(Dl, Dr);  // S, L0, D1, D2
   // When this fails, the results are replaced by wide_range_kernel's (hinge_kernel.hpp, in_range():
   // (2A)^2 >= 2^-140 M^4 in both triangles and l_0^2 >= 2^-500 M^2).
-  o.fast_range = (dots.hi.lane(0) * P2) * P2 >= 0x1p-140 && (dots.hi.lane(4) * P2) * P2 >= 0x1p-140 &&
-                 dots.hi.lane(1) * P2 >= 0x1p-500;
-  const L one = L::broadcast(1), nothing = L::broadcast(0);
+  each([&](auto h) {
+    const double P2 = inverse_square_power_of_two(largest[h]);
+    const L& S = part<h>(dots.hi);
+    o[h].fast_range = (S.lane(0) * P2) * P2 >= 0x1p-140 && (S.lane(4) * P2) * P2 >= 0x1p-140 && S.lane(1) * P2 >= 0x1p-500;
+  });
+  const W one = W::broadcast(1), nothing = W::broadcast(0);
   // 1/2A and 1/l_0 start from y = 1/sqrt of estimates in double formed before the dot products (so that
   // the square root and the division overlap them), and Newton's step y (1 + e/2), e = 1 - a y^2 (a = S,
   // L0 in double-double), is folded into the products that use them, which saves its latency: with
@@ -230,35 +257,37 @@ HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, boo
   //   1/(2A)^2 = y_S^2 (1 + e_S),  K = 1/(l_0 2A) = y_S y_L (1 + (e_S + e_L)/2),  1/l_0^2 = y_L^2 (1 + e_L),
   //   n = C y_S (1 + e_S/2)
   // (exact.hpp, rsqrt_correction; y_S y_L exact, two_prod).
-  const L estimates = blend<0, 1, 1, 1>(sum_of_three(Cv.hi * Cv.hi),
+  const W estimates = blend<0, 1, 1, 1>(sum_of_three(Cv.hi * Cv.hi),
                                         blend<0, 0, 1, 1>(spread<0>(F[0].hi * F[0].hi + F[1].hi * F[1].hi + F[2].hi * F[2].hi), one));
-  const L y = one / root(estimates);  // lanes 0, 1: y_S, y_L (2, 3: 1)
-  const L half_e = rsqrt_correction(D{blend<0, 0, 1, 1>(dots.hi, one), blend<0, 0, 1, 1>(dots.lo, nothing)}, y);  // e/2
+  const W y = one / root(estimates);  // lanes 0, 1: y_S, y_L (2, 3: 1)
+  const W half_e = rsqrt_correction(D{blend<0, 0, 1, 1>(dots.hi, one), blend<0, 0, 1, 1>(dots.lo, nothing)}, y);  // e/2
   const D yy = two_prod(permute<0, 0, 1, 1>(y), permute<0, 1, 1, 1>(y));  // y_S^2, y_S y_L, y_L^2
-  const L ee = permute<0, 0, 1, 1>(half_e) + permute<0, 1, 1, 1>(half_e);   // e_S, (e_S + e_L)/2, e_L
+  const W ee = permute<0, 0, 1, 1>(half_e) + permute<0, 1, 1, 1>(half_e);   // e_S, (e_S + e_L)/2, e_L
   const D G{yy.hi, yy.lo + yy.hi * ee};                                        // 1/(2A)^2, K, 1/l_0^2
   const D invS = spread_dd<0>(G), K = spread_dd<1>(G), RL = spread_dd<2>(G);
 
-  const L lower_negated = L::make(1, 1, 1, 1, -1, -1, -1, -1);
+  const W lower_negated = W::make(1, 1, 1, 1, -1, -1, -1, -1);
   const D nw = times_corrected(Cv, spread<0>(y), spread<0>(half_e));  // n | -n~, double-double
-  const L nv = nw.hi * lower_negated;       // n | n~ (the lower labels run clockwise)
-  const L n[3] = {spread<0>(nv), spread<1>(nv), spread<2>(nv)};
-  L q[3];
+  const W nv = nw.hi * lower_negated;       // n | n~ (the lower labels run clockwise)
+  const W n[3] = {spread<0>(nv), spread<1>(nv), spread<2>(nv)};
+  W q[3];
   HINGE_FAST_UNROLL
   for (int c = 0; c < 3; ++c) q[c] = round_product(X[c], invS);  // lane j: q_j = m_j / h_j
   // r_0 = m_0 / l_0^2, with m_0 = X_0 K (never 1 / (l_0^3 2A), which can overflow)
-  const L rv = round_product(lanes_of<0>(X[0], X[1], X[2]) * K, RL);
+  const W rv = round_product(lanes_of<0>(X[0], X[1], X[2]) * K, RL);
   // a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 . e_0) / (l_0 2A)
-  const L a = round_product(permute_dd<1, 3, 2, 3>(dots), K) * L::make(1, -1, -1, 0, 1, -1, -1, 0);
+  const W a = round_product(permute_dd<1, 3, 2, 3>(dots), K) * W::make(1, -1, -1, 0, 1, -1, -1, 0);
 
   // Validity: each triangle's area is certainly nonzero when some component k of C passes the area
   // filter (lanes.hpp, area_certainty) with perm_k = |f2_i f0_j| + |f2_j f0_i|. Otherwise the caller
   // decides exactly.
   {
-    const L perm = magnitude(f2_yzx.hi * f0_zxy.hi) + magnitude(f2_zxy.hi * f0_yzx.hi);
-    const L certain = largest_of_three(area_certainty(perm, Cv.hi));
-    o.certain_upper = certain.lane(0) > 0;
-    o.certain_lower = certain.lane(4) > 0;
+    const W perm = magnitude(f2_yzx.hi * f0_zxy.hi) + magnitude(f2_zxy.hi * f0_yzx.hi);
+    const W certain = largest_of_three(area_certainty(perm, Cv.hi));
+    each([&](auto h) {
+      o[h].certain_upper = part<h>(certain).lane(0) > 0;
+      o[h].certain_lower = part<h>(certain).lane(4) > 0;
+    });
   }
   // The sign of theta: the filter of exact.hpp (orientation_filter) on p = fl(x2 - x1), q = fl(x0 - x1),
   // r = fl(x3 - x1), the high parts of f0, -f2 and -f2~, with the same operations in the same order (so
@@ -267,24 +296,27 @@ HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, boo
   if constexpr (kRescaled) {
     double p[3], qq[3], r[3];
     for (int k = 0; k < 3; ++k) {
-      p[k] = x[6 + k] - x[3 + k];
-      qq[k] = x[k] - x[3 + k];
-      r[k] = x[9 + k] - x[3 + k];
+      p[k] = x[0][6 + k] - x[0][3 + k];
+      qq[k] = x[0][k] - x[0][3 + k];
+      r[k] = x[0][9 + k] - x[0][3 + k];
     }
     double computed;
-    o.sign = orientation_filter(p, qq, r, computed);
+    o[0].sign = orientation_filter(p, qq, r, computed);
   } else {
-    const L p = lanes_of<0>(F[0].hi, F[1].hi, F[2].hi);                        // lanes k: p_k
-    const L m1 = f2_yzx.hi * swap_halves(f2_zxy.hi), m2 = f2_zxy.hi * swap_halves(f2_yzx.hi);  // q_i r_j, q_j r_i
-    const L det = sum_of_three(p * (m1 - m2)), perm = sum_of_three(magnitude(p) * (magnitude(m1) + magnitude(m2)));
+    const W p = lanes_of<0>(F[0].hi, F[1].hi, F[2].hi);                        // lanes k: p_k
+    const W m1 = f2_yzx.hi * swap_halves(f2_zxy.hi), m2 = f2_zxy.hi * swap_halves(f2_yzx.hi);  // q_i r_j, q_j r_i
+    const W det = sum_of_three(p * (m1 - m2)), perm = sum_of_three(magnitude(p) * (magnitude(m1) + magnitude(m2)));
     // The guard: every |p_k|, |q_k|, |r_k| zero or in [2^-300, 2^300] (the upper limit holds: M <= 2^200);
     // a t in (0, 2^-300) is one where both 2^-300 - t and t are positive.
-    auto small = [](const L& v) { return smaller(L::broadcast(0x1p-300) - magnitude(v), magnitude(v)); };
-    const L tiny = largest_of_three(larger(small(p), small(f2_yzx.hi)));
-    const double d = det.lane(0), bound = 9.0 * 0x1p-53 * perm.lane(0);
-    const int negative = d > bound, positive = -d > bound;
-    const int decided = (tiny.lane(0) <= 0) & (tiny.lane(4) <= 0) & (negative | positive | (perm.lane(0) == 0.0));
-    o.sign = decided ? positive - negative : kUndecided;
+    auto small = [](const W& v) { return smaller(W::broadcast(0x1p-300) - magnitude(v), magnitude(v)); };
+    const W tiny = largest_of_three(larger(small(p), small(f2_yzx.hi)));
+    each([&](auto h) {
+      const double d = part<h>(det).lane(0), bound = 9.0 * 0x1p-53 * part<h>(perm).lane(0);
+      const int negative = d > bound, positive = -d > bound;
+      const int decided = (part<h>(tiny).lane(0) <= 0) & (part<h>(tiny).lane(4) <= 0) &
+                          (negative | positive | (part<h>(perm).lane(0) == 0.0));
+      o[h].sign = decided ? positive - negative : kUndecided;
+    });
   }
   // theta = sgn 2 atan2(|n - n~|, |n + n~|) (Fig. 3 and eq. 12): nw's halves are n and -n~ in
   // double-double, so their sum is n - n~ (half 0) and their difference -(n + n~) (half 1). Their squared
@@ -294,27 +326,36 @@ HINGE_FAST_INLINE LanesOutcome lanes_kernel(const std::array<double, 12>& x, boo
     const D t{swap_halves(nw.hi) * lower_negated, swap_halves(nw.lo) * lower_negated};
     const D s = nw + t;
     const D sq = two_prod(s.hi, s.hi);
-    const L small = sq.lo + (s.hi + s.hi) * s.lo;  // the square's error and its first-order term
+    const W small = sq.lo + (s.hi + s.hi) * s.lo;  // the square's error and its first-order term
     const D s01 = two_sum(sq.hi, permute<1, 2, 0, 3>(sq.hi)), s012 = two_sum(s01.hi, permute<2, 0, 1, 3>(sq.hi));
-    const L lengths2 = s012.hi + ((s01.lo + s012.lo) + sum_of_three(small));  // lane 0: |n - n~|^2, lane 4: |n + n~|^2
-    const L lengths = root(lengths2);
-    o.s_minus = lengths.lane(0);
-    o.s_plus = lengths.lane(4);
-    o.tan_half_theta = std::sqrt(lengths2.lane(0) / lengths2.lane(4));
-    o.folded = sum_of_three(nv * swap_halves(nv)).lane(0) < 0;  // n . n~
+    const W lengths2 = s012.hi + ((s01.lo + s012.lo) + sum_of_three(small));  // lane 0: |n - n~|^2, lane 4: |n + n~|^2
+    const W lengths = root(lengths2);
+    const W nn = sum_of_three(nv * swap_halves(nv));  // n . n~
+    each([&](auto h) {
+      o[h].s_minus = part<h>(lengths).lane(0);
+      o[h].s_plus = part<h>(lengths).lane(4);
+      o[h].tan_half_theta = std::sqrt(part<h>(lengths2).lane(0) / part<h>(lengths2).lane(4));
+      o[h].folded = part<h>(nn).lane(0) < 0;
+    });
   }
 
   // Eq. (4): grad_x0 = -a_0 n, grad_x1 = a_1 n + a~_1 n~, grad_x2 = a_2 n + a~_2 n~, grad_x3 = -a~_0 n~; lane
   // by lane, then interleaved into x0.x, x0.y, ..., x3.z.
-  L g[3];
+  W g[3];
   HINGE_FAST_UNROLL
   for (int c = 0; c < 3; ++c) {
-    const L t = a * n[c];
+    const W t = a * n[c];
     g[c] = blend<1, 0, 0, 0>(t + swap_halves(t), -t);  // lanes 0, 1, 2, 4: x0, x1, x2, x3
   }
-  store_gradient(g, out.grad.data());
-  if (want_hessian) lanes_hessian(n, nv, q, a, rv, out.hess.data());
-  return o;
+  each([&](auto h) {
+    const L gh[3] = {part<h>(g[0]), part<h>(g[1]), part<h>(g[2])};
+    store_gradient(gh, out[h]->grad.data());
+  });
+  if (want_hessian)
+    each([&](auto h) {
+      const L nh[3] = {part<h>(n[0]), part<h>(n[1]), part<h>(n[2])}, qh[3] = {part<h>(q[0]), part<h>(q[1]), part<h>(q[2])};
+      lanes_hessian(nh, part<h>(nv), qh, part<h>(a), part<h>(rv), out[h]->hess.data());
+    });
 }
 
 }  // namespace hinge::fast::detail

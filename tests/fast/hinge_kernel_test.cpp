@@ -353,13 +353,28 @@ TEST(HingeKernel, PowerOfTwoScalingIsExactOverTheWholeExponentRange) {
 // and promises the same bits from each: lane-by-lane IEEE operations in the same order. Checked on the
 // processor's instruction sets, over well-shaped hinges, the extreme shapes and the findings above (the
 // rescaled and wide-range paths), and the rejections.
-TEST(HingeKernel, EveryInstructionSetGivesTheSameBits) {
-  std::vector<std::array<double, 12>> hinges = test::well_shaped_hinges(test::cases(200), 27);
+// Well-shaped hinges, the extreme shapes and the findings above scaled far (the rescaled and wide-range
+// paths), the flat hinge and the folded flat one (theta = +pi): the cases of the same-bits tests.
+std::vector<std::array<double, 12>> same_bits_hinges(int well_shaped) {
+  std::vector<std::array<double, 12>> hinges = test::well_shaped_hinges(well_shaped, 27);
   for (const ExtremeHinge& h : extreme_hinges()) hinges.push_back(h.x);
   for (int k : {-700, -250, 250, 700})
     for (const auto& x : {kFinding2, kFinding3, test::flat_hinge()})
       if (const auto y = scaled_exactly(x, k)) hinges.push_back(*y);
+  hinges.push_back(test::flat_hinge());
   hinges.push_back({0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, 1, 0});  // folded flat: theta = +pi
+  return hinges;
+}
+
+bool same_bits(const HingeDerivatives<double>& a, const HingeDerivatives<double>& b) {
+  return std::bit_cast<std::uint64_t>(a.theta) == std::bit_cast<std::uint64_t>(b.theta) &&
+         std::bit_cast<std::uint64_t>(a.tan_half_theta) == std::bit_cast<std::uint64_t>(b.tan_half_theta) &&
+         a.on_branch_cut == b.on_branch_cut && std::memcmp(a.grad.data(), b.grad.data(), sizeof(double) * 12) == 0 &&
+         std::memcmp(a.hess.data(), b.hess.data(), sizeof(double) * 144) == 0;
+}
+
+TEST(HingeKernel, EveryInstructionSetGivesTheSameBits) {
+  const std::vector<std::array<double, 12>> hinges = same_bits_hinges(test::cases(200));
   int compared = 0;
   for (const auto& x : hinges)
     for (bool want_hessian : {true, false}) {
@@ -388,6 +403,48 @@ TEST(HingeKernel, EveryInstructionSetGivesTheSameBits) {
         EXPECT_EQ(message, input_error([&] { hinge_derivatives<double>(bad); }));
       }
     }
+}
+
+// Many hinges at once (with AVX-512 two at a time: lanes.hpp, Twice) give each hinge the bits it gets
+// alone. The special cases sit between well-shaped hinges in both orders, so that each meets the pair
+// kernel in either position, next to an ordinary hinge and next to another special one (a rare path in
+// either hinge sends the pair one by one); the count is odd (the last hinge alone).
+TEST(HingeKernel, ManyAtOnceGiveTheBitsOfOneAtATime) {
+  const std::vector<std::array<double, 12>> special = same_bits_hinges(0);
+  const std::vector<std::array<double, 12>> ordinary = test::well_shaped_hinges(test::cases(100), 31);
+  std::vector<std::array<double, 12>> hinges;
+  for (std::size_t i = 0; i < ordinary.size(); ++i) {
+    hinges.push_back(ordinary[i]);
+    if (i < special.size()) hinges.push_back(special[i]);
+    if (i < special.size()) hinges.push_back(special[special.size() - 1 - i]);
+  }
+  hinges.insert(hinges.end(), special.begin(), special.end());
+  if (hinges.size() % 2 == 0) hinges.push_back(ordinary[0]);
+  ASSERT_GT(ordinary.size(), special.size());
+  for (bool want_hessian : {true, false}) {
+    std::vector<HingeDerivatives<double>> many(hinges.size());
+    hinge_derivatives<double>(hinges, many, want_hessian);
+    for (std::size_t i = 0; i < hinges.size(); ++i)
+      EXPECT_TRUE(same_bits(many[i], hinge_derivatives<double>(hinges[i], want_hessian))) << i << ": " << test::describe(hinges[i]);
+  }
+  // The other scalar types evaluate one by one: the same.
+  std::vector<HingeDerivatives<float>> floats(ordinary.size());
+  hinge_derivatives<float>(ordinary, floats);
+  for (std::size_t i = 0; i < ordinary.size(); ++i) EXPECT_EQ(floats[i].hess, hinge_derivatives<float>(ordinary[i]).hess);
+}
+
+TEST(HingeKernel, ManyAtOnceThrowForTheFirstFailingHingeInOrder) {
+  std::vector<std::array<double, 12>> hinges = test::well_shaped_hinges(8, 33);
+  const std::array<double, 12> zero_area{0, 0, 0, 1, 0, 0, 2, 0, 0, 0.5, -1, 0};
+  const std::array<double, 12> not_finite{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, NAN, 0};
+  hinges[5] = zero_area;   // in the second place of a pair
+  hinges[6] = not_finite;  // later: not reported
+  std::vector<HingeDerivatives<double>> out(hinges.size());
+  EXPECT_EQ(input_error([&] { hinge_derivatives<double>(hinges, out); }), input_error([&] { hinge_derivatives<double>(zero_area); }));
+  hinges[4] = not_finite;  // now first, in the first place of a pair
+  EXPECT_EQ(input_error([&] { hinge_derivatives<double>(hinges, out); }), input_error([&] { hinge_derivatives<double>(not_finite); }));
+  out.pop_back();
+  EXPECT_THROW(hinge_derivatives<double>(hinges, out), std::invalid_argument);
 }
 
 }  // namespace

@@ -66,6 +66,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 
@@ -90,6 +92,13 @@ struct HingeDerivatives {
 // Throws hinge::InputError for a non-finite or degenerate hinge.
 template <class Scalar>
 HingeDerivatives<Scalar> hinge_derivatives(const std::array<double, 12>& x, bool want_hessian = true);
+// The same for many hinges: out[i] for x[i], bit for bit what hinge_derivatives(x[i]) gives. For double
+// with AVX-512, two hinges at a time (their chains of dependent operations overlapped: lanes.hpp, Twice).
+// Throws std::invalid_argument if the two differ in size, and as hinge_derivatives for the first failing
+// hinge in order (the other outputs are then unspecified).
+template <class Scalar>
+void hinge_derivatives(std::span<const std::array<double, 12>> x, std::span<HingeDerivatives<Scalar>> out,
+                       bool want_hessian = true);
 
 // The per-triangle summary of the header comment, in Scalar.
 template <class Scalar>
@@ -592,6 +601,8 @@ template <class Scalar>
 // a hardware fused multiply-add) and x86-64-v4 (AVX-512), the best the processor has chosen at run time
 // (src/hinge_kernel_double.cpp); all give the same bits.
 void hinge_kernel_double(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);
+// Hinges x[0 .. count) into out[0 .. count), two at a time where the processor has AVX-512.
+void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, bool want_hessian, HingeDerivatives<double>* out);
 // The same compiled for one instruction set (for tests); false, and nothing written, where the processor
 // lacks it.
 enum class KernelIsa { baseline, avx2, avx512 };
@@ -605,6 +616,14 @@ HingeDerivatives<Scalar> hinge_derivatives(const std::array<double, 12>& x, bool
   if constexpr (std::is_same_v<Scalar, double>) detail::hinge_kernel_double(x, want_hessian, out);
   else detail::hinge_kernel(x, want_hessian, out);
   return out;
+}
+
+template <class Scalar>
+void hinge_derivatives(std::span<const std::array<double, 12>> x, std::span<HingeDerivatives<Scalar>> out,
+                       bool want_hessian) {
+  if (x.size() != out.size()) throw std::invalid_argument("hinge_derivatives: x and out differ in size");
+  if constexpr (std::is_same_v<Scalar, double>) detail::hinge_kernel_double(x.data(), x.size(), want_hessian, out.data());
+  else for (std::size_t i = 0; i < x.size(); ++i) out[i] = hinge_derivatives<Scalar>(x[i], want_hessian);
 }
 
 #define HINGE_FAST_HINGE_EXTERN(S) \

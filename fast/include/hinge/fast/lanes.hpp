@@ -220,6 +220,74 @@ HINGE_FAST_INLINE double largest_lane(L a) {
   a = larger(a, permute<1, 0, 3, 2>(a));
   return a.lane(0);
 }
+// Two sets of lanes side by side: the per-hinge kernel on two hinges at once (src/hinge_kernel_lanes.hpp,
+// the batch of hinge_kernel.hpp). Every operation acts on both, lane by lane as on one, so each hinge
+// gets exactly its bits alone, and the processor has two independent chains of operations to overlap
+// (one hinge alone leaves it idle for part of its chain: hinge_kernel_double.cpp).
+template <class L>
+struct Twice {
+  L a, b;
+  static HINGE_FAST_INLINE Twice make(double a0, double a1, double a2, double a3, double b0, double b1, double b2,
+                                      double b3) {
+    return {L::make(a0, a1, a2, a3, b0, b1, b2, b3), L::make(a0, a1, a2, a3, b0, b1, b2, b3)};
+  }
+  static HINGE_FAST_INLINE Twice broadcast(double x) { return {L::broadcast(x), L::broadcast(x)}; }
+  friend HINGE_FAST_INLINE Twice operator+(Twice x, Twice y) { return {x.a + y.a, x.b + y.b}; }
+  friend HINGE_FAST_INLINE Twice operator-(Twice x, Twice y) { return {x.a - y.a, x.b - y.b}; }
+  friend HINGE_FAST_INLINE Twice operator*(Twice x, Twice y) { return {x.a * y.a, x.b * y.b}; }
+  friend HINGE_FAST_INLINE Twice operator/(Twice x, Twice y) { return {x.a / y.a, x.b / y.b}; }
+  friend HINGE_FAST_INLINE Twice operator*(Twice x, double y) { return {x.a * y, x.b * y}; }
+  friend HINGE_FAST_INLINE Twice operator-(Twice x) { return {-x.a, -x.b}; }
+};
+template <class L>
+HINGE_FAST_INLINE Twice<L> fused(Twice<L> x, Twice<L> y, Twice<L> z) {
+  return {fused(x.a, y.a, z.a), fused(x.b, y.b, z.b)};
+}
+template <class L>
+HINGE_FAST_INLINE Twice<L> root(Twice<L> x) {
+  return {root(x.a), root(x.b)};
+}
+template <int p0, int p1, int p2, int p3, class L>
+HINGE_FAST_INLINE Twice<L> permute(Twice<L> x) {
+  return {permute<p0, p1, p2, p3>(x.a), permute<p0, p1, p2, p3>(x.b)};
+}
+template <int b0, int b1, int b2, int b3, class L>
+HINGE_FAST_INLINE Twice<L> blend(Twice<L> x, Twice<L> y) {
+  return {blend<b0, b1, b2, b3>(x.a, y.a), blend<b0, b1, b2, b3>(x.b, y.b)};
+}
+template <int i0, int i1, int i2, int i3, class L>
+HINGE_FAST_INLINE Twice<L> shuffle(Twice<L> x, Twice<L> y) {
+  return {shuffle<i0, i1, i2, i3>(x.a, y.a), shuffle<i0, i1, i2, i3>(x.b, y.b)};
+}
+template <class L>
+HINGE_FAST_INLINE Twice<L> swap_halves(Twice<L> x) {
+  return {swap_halves(x.a), swap_halves(x.b)};
+}
+template <class L>
+HINGE_FAST_INLINE Twice<L> magnitude(Twice<L> x) {
+  return {magnitude(x.a), magnitude(x.b)};
+}
+template <class L>
+HINGE_FAST_INLINE Twice<L> larger(Twice<L> x, Twice<L> y) {
+  return {larger(x.a, y.a), larger(x.b, y.b)};
+}
+template <class L>
+HINGE_FAST_INLINE Twice<L> smaller(Twice<L> x, Twice<L> y) {
+  return {smaller(x.a, y.a), smaller(x.b, y.b)};
+}
+// The lanes of hinge h (0 or 1) of W = L or Twice<L> (h = 0).
+template <int h, class L>
+HINGE_FAST_INLINE const L& part(const L& x) {
+  static_assert(h == 0);
+  return x;
+}
+template <int h, class L>
+HINGE_FAST_INLINE const L& part(const Twice<L>& x) {
+  static_assert(h == 0 || h == 1);
+  if constexpr (h == 0) return x.a;
+  else return x.b;
+}
+
 // a times 2^k lane by lane, exactly but where a result is subnormal (the rare path of the kernel).
 template <class L>
 inline L scaled_by_power_of_two(L a, int k) {
