@@ -157,8 +157,8 @@ HINGE_FAST_INLINE W pick12_of(const double* const* y) {
   else return {pick12<L, i0, i1, i2, i3, i4, i5, i6, i7>(y[0]), pick12<L, i0, i1, i2, i3, i4, i5, i6, i7>(y[1])};
 }
 
-// The vector work of the kernel on B hinges (1, or 2 side by side: lanes.hpp, Twice): for each, grad theta
-// and (if asked) Hess theta into out[b], the rest into the outcome o[b], which evaluate()
+// The vector work of the kernel on B hinges (1, or 2 side by side: lanes.hpp, Twice): for each hinge h,
+// grad theta and (if asked) Hess theta into out[h], the rest into the outcome o[h], which evaluate()
 // (hinge_kernel_double.cpp) completes. There is no call in it (the calls to the exact predicates and atan2
 // are the caller's): GCC spills every vector register of a function around any call in it. `kRescaled`
 // (B = 1): the edges are first brought to M in [1, 2) by a power of two (the rare path, the outcome
