@@ -28,8 +28,10 @@
 #endif
 #if defined(__GNUC__) && !defined(__clang__)
 #define HINGE_FAST_UNROLL _Pragma("GCC unroll 3")
+#define HINGE_FAST_UNROLL4 _Pragma("GCC unroll 4")
 #else
 #define HINGE_FAST_UNROLL
+#define HINGE_FAST_UNROLL4
 #endif
 
 namespace hinge::fast {

@@ -72,6 +72,11 @@ struct TriangleGeometry {
   Scalar inv_double_area;          // 1 / 2A                                       (line 8)
 };
 
+// The next and the previous local index mod 3, without a division (for an edge k known only at run
+// time: the owned edges of a face).
+HINGE_FAST_INLINE constexpr int next3(int k) { return k == 2 ? 0 : k + 1; }
+HINGE_FAST_INLINE constexpr int prev3(int k) { return k == 0 ? 2 : k - 1; }
+
 template <class Scalar>
 HINGE_FAST_INLINE Vec3<Scalar> vsub(const Vec3<Scalar>& a, const Vec3<Scalar>& b) {
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
@@ -154,7 +159,7 @@ template <class Scalar>
 HINGE_FAST_INLINE void hinge_gradient(const TriangleGeometry<Scalar>& t, int k, const Vec3<Scalar>& xq,
                                       const Vec3<Scalar>& xr, const Vec3<Scalar>& xs, const Vec3<Scalar>& nt,
                                       const Scalar& inv_double_area_t, std::array<Vec3<Scalar>, 4>& g) {
-  const int j = (k + 1) % 3, i = (k + 2) % 3;
+  const int j = next3(k), i = prev3(k);
   const auto& ek = t.e[k];
   // Each coefficient is (a dot product with e_k) / l_k, then / 2A: the intermediates scale like lengths,
   // never 1 / (l_k 2A) (which overflows for a short edge or a small triangle whose 1 / h does not).
@@ -179,7 +184,7 @@ HINGE_FAST_INLINE void add_hinge_outer_product(int k, const std::array<Column<Sc
                                                const std::array<Vec3<Scalar>, 4>& g, unsigned mirror,
                                                std::array<Columns3<Scalar>, 3>& diag,
                                                std::array<Columns3<Scalar>, 3>& off) {
-  const int j = (k + 1) % 3, i = (k + 2) % 3;
+  const int j = next3(k), i = prev3(k);
   // local vertex k, k+1, k+2 is hinge vertex p (0), q (1), r (2); off[k] joins p, q, off[j] q, r, off[i] r, p
   const int first[3] = {0, 1, 2}, second[3] = {1, 2, 0};
   const int block[3] = {k, j, i};
