@@ -45,7 +45,7 @@ void rescaled_baseline(const std::array<double, 12>* const* x, bool h, HingeDeri
 }
 
 // pair: two hinges at once (lanes.hpp, Twice), for AVX-512 only: there one hinge's lanes are one register
-// of 32, and two at once measured 6-8% faster per hinge than one by one (bench/README.md); AVX2 and the
+// of 32, and two at once measured 4-8% faster per hinge than one by one (fast/README.md); AVX2 and the
 // baseline hold one hinge's lanes in two registers of 16 already (not tried: two hinges would spill more).
 struct Kernels {
   Kernel common, rescaled, pair;
