@@ -1,4 +1,4 @@
-// cloth_obj N SEED FILE: writes bench/cloth.hpp's N x N cloth as an OBJ file (seed 1: the rest state,
+// cloth_obj N SEED FILE: writes the benchmark's N x N cloth (hinge/reference/samples.hpp) as an OBJ file (seed 1: the rest state,
 // seed 2: the deformed state of the benchmarks), for timing whole processes such as
 // `hinge hessian --mesh deformed.obj --rest rest.obj --repeat R` (bench/README.md).
 #include <charconv>
@@ -6,8 +6,8 @@
 #include <fstream>
 #include <string>
 
-#include "cloth.hpp"
-#include "hinge/reference/obj.hpp"
+#include "hinge/io/obj.hpp"
+#include "hinge/reference/samples.hpp"
 
 int main(int argc, char** argv) {
   int n = 0;
@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::ofstream out(argv[3]);
-  hinge::write_obj(out, hinge::bench::cloth(n, seed));
+  hinge::io::write_obj(out, hinge::cloth(n, seed));
   out.flush();
   if (!out) {
     std::fprintf(stderr, "cloth_obj: writing %s failed\n", argv[3]);

@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
-#include "cloth.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
+#include "hinge/reference/samples.hpp"
 
 namespace hinge::bench {
 namespace {
@@ -42,7 +42,7 @@ int env_int(const char* name, int fallback) {
 // ---- one hinge ---------------------------------------------------------------------------------------
 
 const std::vector<std::array<double, 12>>& bench_hinges() {
-  static const auto h = hinges(1024, 7);
+  static const auto h = well_shaped_hinges(1024, 7);
   return h;
 }
 

@@ -1,17 +1,17 @@
-// hinge demo: the main job on built-in defaults. Evaluates a built-in set of hinges (the worked examples
-// of CONVENTIONS.md and random well-shaped hinges, rotated, scaled and offset) with the reference in
-// double and with the oracle (MPFR, 256 bits), and prints a short summary: accuracy in units of 2^-53
-// and time per hinge.
+// hinge demo: the main job on built-in defaults. Evaluates built-in hinges (the worked examples of
+// docs/examples and random well-shaped ones, rotated, scaled and offset) with the fast kernel and the
+// reference in double, against the certified oracle, and prints a short summary: normwise Hessian error in
+// units of 2^-53 and time per hinge.
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <iostream>
-#include <random>
 
 #include "commands.hpp"
-#include "hinge/reference/evaluate.hpp"
-#include "methods.hpp"
-#include "output.hpp"
+#include "hinge/io/number.hpp"
+#include "hinge/methods/methods.hpp"
+#include "hinge/oracle/conformance.hpp"
+#include "hinge/oracle/oracle.hpp"
+#include "hinge/reference/samples.hpp"
 
 namespace hinge::tools {
 
@@ -23,28 +23,13 @@ struct NamedHinge {
 };
 
 std::vector<NamedHinge> builtin_hinges(int random_count, unsigned seed) {
-  std::vector<NamedHinge> hinges = {  // ../shared/spec/examples/eval-input.jsonl
+  std::vector<NamedHinge> hinges = {  // docs/examples/eval-input.jsonl
       {"flat", {0.5, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5, -1.0, 0.0}},
       {"valley", {0.5, 1.0, 0.25, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.25, -1.0, 0.5}},
       {"generic", {0.125, 0.75, -0.5, -0.25, 0.0625, 0.0, 1.0, 0.125, -0.0625, 0.625, -0.875, 0.375}}};
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(-1, 1), decade(-3, 3);
-  while (static_cast<int>(hinges.size()) < 3 + random_count) {
-    std::array<double, 12> x;
-    const double scale = std::pow(10.0, decade(rng)), offset = 100 * unit(rng);
-    for (double& c : x) c = offset + scale * unit(rng);
-    if (reference::well_shaped(x)) hinges.push_back({"random-" + std::to_string(hinges.size() - 3), x});
-  }
+  int i = 0;
+  for (const auto& x : well_shaped_hinges(random_count, seed)) hinges.push_back({"random-" + std::to_string(i++), x});
   return hinges;
-}
-
-double normwise_error(const std::array<double, 144>& h, const std::array<double, 144>& exact) {
-  long double diff = 0, norm = 0;
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    diff += (static_cast<long double>(h[i]) - exact[i]) * (static_cast<long double>(h[i]) - exact[i]);
-    norm += static_cast<long double>(exact[i]) * exact[i];
-  }
-  return static_cast<double>(std::sqrt(diff / norm) / 0x1p-53L);
 }
 
 }  // namespace
@@ -55,28 +40,32 @@ Action add_demo(CLI::App& app) {
   cmd->add_option("--count", *count, "Number of random well-shaped hinges")->capture_default_str()->check(CLI::NonNegativeNumber);
   return [count]() -> int {
     const auto hinges = builtin_hinges(*count, 2013);
-    const ScalarType dbl{ScalarType::Kind::kind_double, 0}, oracle{ScalarType::Kind::kind_mpfr, 256};
     using clock = std::chrono::steady_clock;
-    std::vector<reference::RoundedTheta> fast_results, oracle_results;
-    auto t0 = clock::now();
-    for (const auto& h : hinges) fast_results.push_back(evaluate_hinge("reference", dbl, h.x));
-    auto t1 = clock::now();
-    for (const auto& h : hinges) oracle_results.push_back(evaluate_hinge("reference", oracle, h.x));
-    auto t2 = clock::now();
-    std::vector<double> errors;
-    for (std::size_t i = 0; i < hinges.size(); ++i) errors.push_back(normwise_error(fast_results[i].hess, oracle_results[i].hess));
-    std::vector<double> sorted = errors;
-    std::sort(sorted.begin(), sorted.end());
-    const auto worst = std::max_element(errors.begin(), errors.end()) - errors.begin();
-    const double per = 1e6 / static_cast<double>(hinges.size());
-    std::cout << "hinge demo: " << hinges.size() << " built-in hinges (3 worked examples of CONVENTIONS.md, " << *count
+    std::vector<oracle::CertifiedTheta> certified;
+    const auto t0 = clock::now();
+    for (const auto& h : hinges) certified.push_back(oracle::certified_theta_derivatives(h.x));
+    const double oracle_us = std::chrono::duration<double, std::micro>(clock::now() - t0).count();
+    const double per = 1.0 / static_cast<double>(hinges.size());
+    std::cout << "hinge demo: " << hinges.size() << " built-in hinges (3 worked examples of docs/examples, " << *count
               << " random well-shaped ones, scales 1e-3..1e3, offsets up to 100)\n";
-    for (int i = 0; i < 3; ++i)
-      std::cout << "  " << hinges[i].id << ": theta = " << format_double(fast_results[i].theta) << "\n";
-    std::cout << "  reference in double vs oracle (mpfr:256), normwise Hessian error in units of 2^-53: median "
-              << sorted[sorted.size() / 2] << ", worst " << sorted.back() << " (" << hinges[worst].id << ")\n"
-              << "  time per hinge: reference double " << std::chrono::duration<double>(t1 - t0).count() * per
-              << " us, oracle " << std::chrono::duration<double>(t2 - t1).count() * per << " us\n";
+    for (int i = 0; i < 3; ++i) std::cout << "  " << hinges[i].id << ": theta = " << io::format_double(certified[i].theta) << "\n";
+    const ScalarType dbl{ScalarType::Kind::kind_double, 0};
+    for (const methods::Method m : {methods::Method::fast, methods::Method::reference}) {
+      std::vector<reference::RoundedTheta> results;
+      const auto t1 = clock::now();
+      for (const auto& h : hinges) results.push_back(methods::evaluate_hinge(m, dbl, h.x));
+      const double us = std::chrono::duration<double, std::micro>(clock::now() - t1).count();
+      std::vector<double> errors;
+      for (std::size_t i = 0; i < hinges.size(); ++i)
+        errors.push_back(oracle::conformance::normwise_error(results[i].hess.data(), certified[i].hess.data(), 144, 1));
+      const auto worst = std::max_element(errors.begin(), errors.end()) - errors.begin();
+      std::vector<double> sorted = errors;
+      std::sort(sorted.begin(), sorted.end());
+      std::cout << "  " << methods::method_name(m) << " in double vs the certified oracle, normwise Hessian error in units of "
+                << "2^-53: median " << sorted[sorted.size() / 2] << ", worst " << sorted.back() << " (" << hinges[worst].id
+                << "); " << us * per << " us per hinge\n";
+    }
+    std::cout << "  certified oracle: " << oracle_us * per << " us per hinge\n";
     return exit_done;
   };
 }

@@ -1,8 +1,8 @@
 // hinge eval [--method M] [--scalar S] [--input FILE] [--output FILE] (CONVENTIONS.md).
 #include "commands.hpp"
+#include "hinge/io/jsonl.hpp"
+#include "hinge/methods/methods.hpp"
 #include "hinge_stream.hpp"
-#include "jsonl.hpp"
-#include "methods.hpp"
 
 namespace hinge::tools {
 
@@ -21,15 +21,12 @@ Action add_eval(CLI::App& app) {
       "Input, one object per line: {\"id\": \"...\", \"x\": [x0.x, x0.y, x0.z, x1.x, ..., x3.z]}.\n"
       "Output, same order: {\"id\", \"theta\", \"grad\": [12], \"hess\": [144, row-major]}, or {\"id\", \"error\"}.\n"
       "Every number is printed so that it reads back exactly. Exit: 0 all lines read, 1 I/O failure, 2 usage.");
-  return [cmd, o]() -> int {
+  return [o]() -> int {
     const ScalarType scalar = parse_scalar_type(o->scalar);  // std::invalid_argument: usage error
-    require_method(o->method);
-    return run_hinge_stream(
-        o->input, o->output,
-        [&](const std::string& id_json, const std::array<double, 12>& x) {
-          return result_line(id_json, evaluate_hinge(o->method, scalar, x));
-        },
-        "eval");
+    const methods::Method method = methods::parse_method(o->method);
+    return run_hinge_stream(o->input, o->output, "eval", [&](const std::string& id_json, const std::array<double, 12>& x) {
+      return io::result_line(id_json, methods::evaluate_hinge(method, scalar, x));
+    });
   };
 }
 

@@ -1,7 +1,9 @@
 // hinge hessian --mesh X.obj [--rest R.obj] --energy tan|shells (--k K | --young Y --poisson NU
 // --thickness H) [--method M] [--scalar S] [--out H.mtx] [--gradient G.txt] [--threads N] [--repeat N]
 #include "commands.hpp"
+#include "hinge/methods/methods.hpp"
 #include "mesh_job.hpp"
+#include "progress.hpp"
 
 namespace hinge::tools {
 
@@ -18,7 +20,20 @@ Action add_hessian(CLI::App& app) {
       ->capture_default_str();
   cmd->footer("Prints 'energy <value>'. Exit: 0 done; 1 invalid input (message names file and line, edge or face;\n"
               "no output file left behind); 2 usage error.");
-  return [o]() { return run_mesh_job(o->mesh, o->method, parse_scalar_type(o->scalar), "hessian"); };
+  return [o]() {
+    const ScalarType scalar = parse_scalar_type(o->scalar);  // std::invalid_argument: usage error
+    const methods::Method method = methods::parse_method(o->method);
+    return run_mesh_command("hessian", [&] {
+      const MeshJob job = load_mesh_job(o->mesh);
+      reference::RoundedMesh result;
+      Progress progress("hinge hessian: evaluations", static_cast<std::size_t>(o->mesh.repeat));
+      for (int r = 0; r < o->mesh.repeat; ++r) {
+        result = methods::evaluate_mesh(method, scalar, job.input());
+        progress.update(static_cast<std::size_t>(r + 1));
+      }
+      return write_mesh_outputs(o->mesh, result);
+    });
+  };
 }
 
 }  // namespace hinge::tools

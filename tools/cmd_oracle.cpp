@@ -8,11 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "hinge/io/jsonl.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
 #include "hinge_stream.hpp"
-#include "jsonl.hpp"
 #include "mesh_job.hpp"
+#include "progress.hpp"
 
 namespace hinge::tools {
 
@@ -32,7 +33,7 @@ std::string certified_line(const std::string& id_json, const oracle::CertifiedTh
   r.theta = c.theta;
   r.grad = c.grad;
   r.hess = c.hess;
-  std::string line = result_line(id_json, r);
+  std::string line = io::result_line(id_json, r);
   line.pop_back();  // '}'
   if (report_precision)
     line += ", \"bits\": " + std::to_string(c.bits) + ", \"exact_bits\": " + std::to_string(c.exact_bits) +
@@ -52,22 +53,46 @@ int run_hinges(const OracleOptions& o) {
   options.start_bits = o.start_bits;
   options.max_bits = o.max_bits;
   std::size_t flagged_hinges = 0, flagged_outputs = 0;
-  const int status = run_hinge_stream(
-      o.input, o.output,
-      [&](const std::string& id_json, const std::array<double, 12>& x) {
+  const int status =
+      run_hinge_stream(o.input, o.output, "oracle", [&](const std::string& id_json, const std::array<double, 12>& x) {
         const oracle::CertifiedTheta c = oracle::certified_theta_derivatives(x, options);
         if (!c.uncertified.empty()) {
           ++flagged_hinges;
           flagged_outputs += c.uncertified.size();
         }
         return certified_line(id_json, c, o.report_precision);
-      },
-      "oracle");
+      });
   if (flagged_outputs > 0)
     std::cerr << "hinge oracle: " << flagged_outputs << " output(s) in " << flagged_hinges
               << " hinge(s) could not be certified within " << o.max_bits
               << " bits; they are flagged \"uncertified\" with their enclosures\n";
   return status;
+}
+
+// The certified energy, gradient and Hessian of a mesh; outputs not certified within --max-bits are listed
+// on standard error (and printed as the double nearest to their enclosure's midpoint).
+int run_mesh(const OracleOptions& o) {
+  oracle::Options options;
+  options.start_bits = o.start_bits;
+  options.max_bits = o.max_bits;
+  return run_mesh_command("oracle", [&] {
+    const MeshJob job = load_mesh_job(o.mesh);
+    oracle::CertifiedMesh m;
+    Progress progress("hinge oracle: evaluations", static_cast<std::size_t>(o.mesh.repeat));
+    for (int r = 0; r < o.mesh.repeat; ++r) {
+      m = oracle::certified_mesh(job.deformed, job.rest ? *job.rest : job.deformed, job.topology, job.parameters,
+                                 job.request, options);
+      progress.update(static_cast<std::size_t>(r + 1));
+    }
+    for (const auto& u : m.uncertified)
+      std::cerr << "hinge oracle: " << u.output << " not certified within " << o.max_bits << " bits: enclosure ["
+                << u.lower << ", " << u.upper << "]\n";
+    if (o.report_precision) std::cerr << "hinge oracle: bits " << m.bits << "\n";
+    if (!m.uncertified.empty())
+      std::cerr << "hinge oracle: " << m.uncertified.size() << " output(s) could not be certified within " << o.max_bits
+                << " bits (listed above; printed as the double nearest to the enclosure's midpoint)\n";
+    return write_mesh_outputs(o.mesh, m.rounded);
+  });
 }
 
 }  // namespace
@@ -94,31 +119,7 @@ Action add_oracle(CLI::App& app) {
       "bits is flagged on its line: \"uncertified\": [{\"output\", \"enclosure\": [lower, upper]}].\n"
       "With --mesh: the certified energy, gradient and Hessian of a mesh (options as for hinge hessian).");
   return [o]() -> int {
-    if (!o->mesh.mesh.empty()) {
-      oracle::Options options;
-      options.start_bits = o->start_bits;
-      options.max_bits = o->max_bits;
-      std::size_t flagged = 0;
-      unsigned bits = 0;
-      const int status = run_mesh_job(
-          o->mesh,
-          [&](const MeshJob& job) {
-            oracle::CertifiedMesh m = oracle::certified_mesh(*job.deformed, *job.rest, *job.topology, job.parameters,
-                                                             job.request, options);
-            flagged = m.uncertified.size();
-            bits = m.bits;
-            for (const auto& u : m.uncertified)
-              std::cerr << "hinge oracle: " << u.output << " not certified within " << o->max_bits
-                        << " bits: enclosure [" << u.lower << ", " << u.upper << "]\n";
-            return std::move(m.rounded);
-          },
-          "oracle");
-      if (o->report_precision) std::cerr << "hinge oracle: bits " << bits << "\n";
-      if (flagged > 0)
-        std::cerr << "hinge oracle: " << flagged << " output(s) could not be certified within " << o->max_bits
-                  << " bits (listed above; printed as the double nearest to the enclosure's midpoint)\n";
-      return status;
-    }
+    if (!o->mesh.mesh.empty()) return run_mesh(*o);
     return run_hinges(*o);
   };
 }

@@ -1,69 +1,42 @@
-// The JSON Lines loop of hinge eval / oracle (tools/hinge_stream.hpp).
+// The streams of hinge eval / oracle (tools/hinge_stream.hpp).
 #include "hinge_stream.hpp"
 
-#include <fstream>
-#include <iostream>
-#include <memory>
-#include <optional>
-
-#include "commands.hpp"
-#include "hinge/reference/errors.hpp"
-#include "jsonl.hpp"
-#include "output.hpp"
-#include "progress.hpp"
+#include <stdexcept>
 
 namespace hinge::tools {
 
-int run_hinge_stream(const std::string& input, const std::string& output, const HingeLineWriter& write,
-                     const std::string& what) {
-  std::ifstream file_in;
-  std::istream* in = &std::cin;
-  if (!input.empty() && input != "-") {
-    file_in.open(input);
-    if (!file_in) {
-      std::cerr << "hinge " << what << ": cannot read " << input << "\n";
-      return exit_invalid_input;
-    }
-    in = &file_in;
-  }
-  std::optional<AtomicFile> file_out;
-  std::ostream* out = &std::cout;
-  try {
-    if (!output.empty() && output != "-") out = &file_out.emplace(output).stream();
-  } catch (const std::exception& e) {
-    std::cerr << "hinge " << what << ": " << e.what() << "\n";
-    return exit_invalid_input;
-  }
+HingeStream::HingeStream(std::string input, std::string output, std::string what)
+    : input_(std::move(input)), output_(std::move(output)), what_(std::move(what)) {}
 
-  Progress progress("hinge " + what + ": hinges", 0);
-  std::size_t count = 0;
-  for_each_hinge_line(*in, [&](const HingeLine& line) {
-    std::string text;
-    if (!line.x) {
-      text = invalid_line(line);
-    } else {
-      try {
-        text = write(line.id_json, *line.x);
-      } catch (const InputError& e) {
-        text = error_line(line.id_json, e.what());
-      } catch (const DomainError& e) {
-        text = error_line(line.id_json, e.what());
-      }
+bool HingeStream::open() {
+  if (!input_.empty() && input_ != "-") {
+    file_in_.open(input_);
+    if (!file_in_) {
+      std::cerr << "hinge " << what_ << ": cannot read " << input_ << "\n";
+      return false;
     }
-    text += '\n';
-    out->write(text.data(), static_cast<std::streamsize>(text.size()));
-    progress.update(++count);
-  });
-  if (in->bad()) {
-    std::cerr << "hinge " << what << ": reading " << (input.empty() ? "standard input" : input) << " failed\n";
+    in_ = &file_in_;
+  }
+  try {
+    if (!output_.empty() && output_ != "-") out_ = &file_out_.emplace(output_).stream();
+  } catch (const std::exception& e) {
+    std::cerr << "hinge " << what_ << ": " << e.what() << "\n";
+    return false;
+  }
+  return true;
+}
+
+int HingeStream::finish() {
+  if (in_->bad()) {
+    std::cerr << "hinge " << what_ << ": reading " << (input_.empty() ? "standard input" : input_) << " failed\n";
     return exit_invalid_input;
   }
   try {
-    out->flush();
-    if (!*out) throw std::runtime_error("writing the output failed");
-    if (file_out) file_out->commit();
+    out_->flush();
+    if (!*out_) throw std::runtime_error("writing the output failed");
+    if (file_out_) file_out_->commit();
   } catch (const std::exception& e) {
-    std::cerr << "hinge " << what << ": " << e.what() << "\n";
+    std::cerr << "hinge " << what_ << ": " << e.what() << "\n";
     return exit_invalid_input;
   }
   return exit_done;

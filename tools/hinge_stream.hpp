@@ -1,20 +1,66 @@
-// tools/hinge_stream.hpp: the JSON Lines loop shared by `hinge eval` and `hinge oracle`.
+// tools/hinge_stream.hpp: the JSON Lines loop shared by `hinge eval` and `hinge oracle`: read hinges, write
+// one result line per input line, in order (CONVENTIONS.md).
 #pragma once
 
-#include <functional>
 #include <array>
+#include <fstream>
+#include <iostream>
+#include <optional>
 #include <string>
+
+#include "commands.hpp"
+#include "hinge/io/atomic_file.hpp"
+#include "hinge/io/jsonl.hpp"
+#include "hinge/reference/errors.hpp"
+#include "progress.hpp"
 
 namespace hinge::tools {
 
-// The output line (without its newline) for the hinge `x` whose id is `id_json` (the id as JSON text);
-// may throw InputError or DomainError, which become error lines.
-using HingeLineWriter = std::function<std::string(const std::string& id_json, const std::array<double, 12>& x)>;
+// The input ("-" or empty: standard input) and the output ("-" or empty: standard output; a file appears
+// only when complete) of a stream.
+class HingeStream {
+ public:
+  HingeStream(std::string input, std::string output, std::string what);
+  bool open();  // false, with a message on standard error, when a file cannot be opened
+  std::istream& in() { return *in_; }
+  std::ostream& out() { return *out_; }
+  int finish();  // the exit status: 0, or 1 (message on standard error) when reading or writing failed
 
-// Reads hinges from `input` ("-" or empty: standard input), writes one result line per hinge to `output`
-// ("-" or empty: standard output; a file appears only when complete). Per-hinge errors become error
-// lines. Returns the exit status: 0 when every line was read, 1 on an I/O failure.
-int run_hinge_stream(const std::string& input, const std::string& output, const HingeLineWriter& write,
-                     const std::string& what);
+ private:
+  std::string input_, output_, what_;
+  std::ifstream file_in_;
+  std::optional<io::AtomicFile> file_out_;
+  std::istream* in_ = &std::cin;
+  std::ostream* out_ = &std::cout;
+};
+
+// Reads hinges from `input`, writes write(id_json, x) for each valid line to `output` (an InputError or a
+// DomainError it throws becomes that hinge's error line; an invalid line gets its invalid-line object).
+// Returns the exit status: 0 when every line was read, 1 on an I/O failure.
+template <class Write>
+int run_hinge_stream(const std::string& input, const std::string& output, const std::string& what, Write&& write) {
+  HingeStream stream(input, output, what);
+  if (!stream.open()) return exit_invalid_input;
+  Progress progress("hinge " + what + ": hinges", 0);
+  std::size_t count = 0;
+  io::for_each_hinge_line(stream.in(), [&](const io::HingeLine& line) {
+    std::string text;
+    if (!line.x) {
+      text = io::invalid_line(line);
+    } else {
+      try {
+        text = write(line.id_json, *line.x);
+      } catch (const InputError& e) {
+        text = io::error_line(line.id_json, e.what());
+      } catch (const DomainError& e) {
+        text = io::error_line(line.id_json, e.what());
+      }
+    }
+    text += '\n';
+    stream.out().write(text.data(), static_cast<std::streamsize>(text.size()));
+    progress.update(++count);
+  });
+  return stream.finish();
+}
 
 }  // namespace hinge::tools

@@ -1,17 +1,13 @@
-// hinge hessian / hinge oracle --mesh: a whole mesh's energy, gradient and Hessian (tools/mesh_job.hpp).
+// hinge hessian / hinge oracle --mesh: reading the meshes, writing the results (tools/mesh_job.hpp).
 #include "mesh_job.hpp"
 
 #include <cmath>
-#include <iostream>
-#include <optional>
 #include <thread>
 
-#include "commands.hpp"
-#include "hinge/reference/errors.hpp"
-#include "hinge/reference/obj.hpp"
-#include "methods.hpp"
-#include "output.hpp"
-#include "progress.hpp"
+#include "hinge/io/atomic_file.hpp"
+#include "hinge/io/matrix_market.hpp"
+#include "hinge/io/number.hpp"
+#include "hinge/io/obj.hpp"
 
 namespace hinge::tools {
 
@@ -21,7 +17,7 @@ void add_mesh_options(CLI::App* cmd, MeshOptions& o, bool mesh_required) {
   cmd->add_option("--rest", o.rest, "Rest mesh, same faces (default: the deformed mesh itself)");
   cmd->add_option("--energy", o.energy, "Bending energy: tan, shells (also willmore, bridson; docs/quantities.md)");
   cmd->add_option("--k", o.k, "Bending stiffness k");
-  cmd->add_option("--young", o.young, "Young's modulus Y (k = Y h^3 / (24 (1 - nu^2)), eq. 11)");
+  cmd->add_option("--young", o.young, "Young's modulus Y (k = Y h^3 / (24 (1 - nu^2)), eq. (11))");
   cmd->add_option("--poisson", o.poisson, "Poisson's ratio nu, in (-1, 1)");
   cmd->add_option("--thickness", o.thickness, "Shell thickness h");
   cmd->add_option("--out", o.out, "Write the energy Hessian here (Matrix Market, coordinate real symmetric)");
@@ -52,89 +48,36 @@ double stiffness(const MeshOptions& o) {
   return k;
 }
 
-void write_matrix_market(std::ostream& out, const Eigen::SparseMatrix<double>& upper) {
-  out << "%%MatrixMarket matrix coordinate real symmetric\n"
-      << "% hinge: Hessian of the bending energy; lower triangle, 1-based, global index 3 v + c\n"
-      << upper.rows() << ' ' << upper.cols() << ' ' << upper.nonZeros() << '\n';
-  std::string line;
-  for (Eigen::Index c = 0; c < upper.outerSize(); ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(upper, c); it; ++it) {
-      line.clear();
-      line += std::to_string(it.col() + 1);  // (row <= col) stored; (col, row) is in the lower triangle
-      line += ' ';
-      line += std::to_string(it.row() + 1);
-      line += ' ';
-      append_double(line, it.value());
-      line += '\n';
-      out << line;
-    }
-}
-
 }  // namespace
 
-int run_mesh_job(const MeshOptions& o, const std::string& method, const ScalarType& scalar, const std::string& what) {
-  require_method(method);
-  return run_mesh_job(o, [&](const MeshJob& job) { return evaluate_mesh(method, scalar, job); }, what);
+MeshJob load_mesh_job(const MeshOptions& o) {
+  if (o.energy.empty()) throw std::invalid_argument("--energy is required (tan or shells)");
+  MeshJob job;
+  job.parameters.model = reference::parse_model(o.energy);
+  if (job.parameters.model == reference::Model::viscoelastic)
+    throw std::invalid_argument("--energy viscoelastic is available from the library, not from this command");
+  job.parameters.k = stiffness(o);
+  job.threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  job.request = reference::want_energy | (o.gradient.empty() ? 0u : reference::want_gradient) |
+                (o.out.empty() ? 0u : reference::want_hessian);
+  job.deformed = io::read_obj(o.mesh);
+  if (!o.rest.empty()) job.rest = io::read_obj(o.rest);
+  job.topology = build_topology(job.deformed);
+  check_faces_nondegenerate(job.deformed);
+  if (job.rest) check_faces_nondegenerate(*job.rest);
+  return job;
 }
 
-int run_mesh_job(const MeshOptions& o, const MeshEvaluator& evaluate, const std::string& what) {
-  if (o.energy.empty()) throw std::invalid_argument("--energy is required (tan or shells)");
-  reference::EnergyParameters parameters;
-  parameters.model = reference::parse_model(o.energy);
-  if (parameters.model == reference::Model::viscoelastic)
-    throw std::invalid_argument("--energy viscoelastic is available from the library, not from this command");
-  parameters.k = stiffness(o);
-  const int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-
-  try {
-    const Mesh deformed = read_obj(o.mesh);
-    std::optional<Mesh> rest_storage;
-    if (!o.rest.empty()) rest_storage = read_obj(o.rest);
-    const Mesh& rest = rest_storage ? *rest_storage : deformed;
-    const Topology topology = build_topology(deformed);
-    check_faces_nondegenerate(deformed);
-    if (&rest != &deformed) check_faces_nondegenerate(rest);
-
-    MeshJob job{&deformed, &rest, &topology, parameters,
-                reference::want_energy | (o.gradient.empty() ? 0u : reference::want_gradient) |
-                    (o.out.empty() ? 0u : reference::want_hessian),
-                threads};
-    reference::RoundedMesh result;
-    Progress progress("hinge " + what + ": evaluations", static_cast<std::size_t>(o.repeat));
-    for (int r = 0; r < o.repeat; ++r) {
-      result = evaluate(job);
-      progress.update(static_cast<std::size_t>(r + 1));
-    }
-
-    // Outputs appear only when all of them are written.
-    std::optional<AtomicFile> hessian_file, gradient_file;
-    if (!o.out.empty()) write_matrix_market(hessian_file.emplace(o.out).stream(), result.hessian);
-    if (!o.gradient.empty()) {
-      auto& g = gradient_file.emplace(o.gradient).stream();
-      std::string line;
-      for (double v : result.gradient) {
-        line.clear();
-        append_double(line, v);
-        line += '\n';
-        g << line;
-      }
-    }
-    if (hessian_file) hessian_file->commit();
-    if (gradient_file) gradient_file->commit();
-    std::cout << "energy " << format_double(result.energy) << std::endl;
-    return std::cout ? exit_done : exit_invalid_input;
-  } catch (const InputError& e) {
-    std::cerr << "hinge " << what << ": " << e.what() << "\n";
-  } catch (const DomainError& e) {
-    std::cerr << "hinge " << what << ": " << e.what() << "\n";
-  } catch (const std::ios_base::failure& e) {
-    std::cerr << "hinge " << what << ": I/O error: " << e.what() << "\n";
-  } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << "hinge " << what << ": " << e.what() << "\n";
-  } catch (const std::runtime_error& e) {
-    std::cerr << "hinge " << what << ": " << e.what() << "\n";
-  }
-  return exit_invalid_input;
+int write_mesh_outputs(const MeshOptions& o, const reference::RoundedMesh& result) {
+  std::optional<io::AtomicFile> hessian_file, gradient_file;
+  if (!o.out.empty())
+    io::write_matrix_market(hessian_file.emplace(o.out).stream(), result.hessian,
+                            "hinge: Hessian of the bending energy; lower triangle, 1-based, global index 3 v + c");
+  if (!o.gradient.empty()) io::write_numbers(gradient_file.emplace(o.gradient).stream(), result.gradient);
+  if (hessian_file) hessian_file->commit();
+  if (gradient_file) gradient_file->commit();
+  std::cout << "energy " << io::format_double(result.energy) << std::endl;
+  return std::cout ? exit_done : exit_invalid_input;
 }
 
 }  // namespace hinge::tools

@@ -1,13 +1,17 @@
-// tools/mesh_job.hpp: the options and the run shared by `hinge hessian` and `hinge oracle --mesh`.
+// tools/mesh_job.hpp: the options, the input files and the output files shared by `hinge hessian` and
+// `hinge oracle --mesh`. A mesh goes one way: read (load_mesh_job: OBJ, topology, checks), evaluate (the
+// command calls hinge::methods or hinge::oracle), write (write_mesh_outputs: Matrix Market, gradient,
+// energy).
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <functional>
+#include <iostream>
 #include <optional>
 #include <string>
 
-#include "hinge/reference/scalar.hpp"
-#include "methods.hpp"
+#include "commands.hpp"
+#include "hinge/methods/methods.hpp"
+#include "hinge/reference/errors.hpp"
 
 namespace hinge::tools {
 
@@ -22,14 +26,43 @@ struct MeshOptions {
 // --threads, --repeat on `cmd`. With `mesh_required` false, --mesh is optional (hinge oracle).
 void add_mesh_options(CLI::App* cmd, MeshOptions& o, bool mesh_required);
 
-// Reads the meshes, evaluates with `method` in `scalar`, prints "energy <value>", writes the Matrix
-// Market Hessian and the gradient if asked. Returns the exit status (0, or 1 with a message on
-// standard error and no output file left behind). Throws std::invalid_argument for usage errors.
-int run_mesh_job(const MeshOptions& o, const std::string& method, const ScalarType& scalar, const std::string& what);
+// The meshes read and checked, with the energy's parameters: what an evaluation takes.
+struct MeshJob {
+  Mesh deformed;
+  std::optional<Mesh> rest;  // --rest; else the deformed mesh is the rest shape
+  Topology topology;
+  reference::EnergyParameters parameters;
+  unsigned request = reference::want_energy;
+  int threads = 1;
+  methods::MeshInput input() const {
+    return {&deformed, rest ? &*rest : &deformed, &topology, parameters, request, threads};
+  }
+};
 
-// The same with another evaluator of the prepared job (hinge oracle --mesh: the certified oracle). It may
-// throw what evaluate_mesh throws.
-using MeshEvaluator = std::function<reference::RoundedMesh(const MeshJob&)>;
-int run_mesh_job(const MeshOptions& o, const MeshEvaluator& evaluate, const std::string& what);
+// Parses --energy and the stiffness (std::invalid_argument for a usage error), reads the meshes and builds
+// the topology (hinge::InputError naming the file and line, the face or the edge).
+MeshJob load_mesh_job(const MeshOptions& o);
+
+// Writes the Matrix Market Hessian (--out) and the gradient (--gradient), both or neither, then prints
+// "energy <value>". Returns the exit status.
+int write_mesh_outputs(const MeshOptions& o, const reference::RoundedMesh& result);
+
+// Runs body() (which returns an exit status); an InputError, DomainError or I/O failure becomes the message
+// "hinge <what>: ..." on standard error and exit status 1, with no output file left behind.
+template <class Body>
+int run_mesh_command(const std::string& what, Body&& body) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    std::cerr << "hinge " << what << ": " << e.what() << "\n";
+  } catch (const DomainError& e) {
+    std::cerr << "hinge " << what << ": " << e.what() << "\n";
+  } catch (const std::ios_base::failure& e) {
+    std::cerr << "hinge " << what << ": I/O error: " << e.what() << "\n";
+  } catch (const std::runtime_error& e) {  // files that cannot be written (io::AtomicFile), filesystem errors
+    std::cerr << "hinge " << what << ": " << e.what() << "\n";
+  }
+  return exit_invalid_input;
+}
 
 }  // namespace hinge::tools

@@ -1,10 +1,10 @@
-// Algorithm 2's hot passes in double (hinge/fast/assemble.hpp), compiled for the baseline x86-64, for
-// x86-64-v3 and (the face pass) x86-64-v4, and chosen at run time (dispatch.hpp); the same bits either way.
-// The face pass works on eight faces at a time in double-double (face_pass_lanes.hpp). (The assembly
-// pass compiled for x86-64-v4 measured slower than for x86-64-v3: 89-100 against 82 ns per edge.)
+// Algorithm 2's hot passes in double (passes.hpp), compiled for the baseline x86-64, for x86-64-v3 and (the
+// face pass) x86-64-v4, and chosen at run time (dispatch.hpp); the same bits either way. The face pass works
+// on eight faces at a time in double-double (face_pass_lanes.hpp); the assembly pass has no x86-64-v4
+// version, which measured slower than x86-64-v3 (docs/performance-log.md).
+#include "dispatch.hpp"
 #include "face_pass_lanes.hpp"
-#include "hinge/fast/assemble.hpp"
-#include "hinge/fast/dispatch.hpp"
+#include "passes.hpp"
 
 namespace hinge::fast::detail {
 namespace {

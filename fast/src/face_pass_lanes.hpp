@@ -6,7 +6,7 @@
 // about two, and the mesh Hessian's normwise error was 2.2 units of 2^-53 on the benchmark cloth
 // instead of 1.7 (against the certified oracle). Included by assemble_double.cpp only.
 //
-// Range: as the rest of the mesh path (assemble.hpp): edge lengths from about 2^-250 to 2^250, where N . N
+// Range: as the rest of the mesh path (passes.hpp): edge lengths from about 2^-250 to 2^250, where N . N
 // stays a normal double (below 2^-250 the double-double low parts underflow and N . N is only as accurate
 // as a double).
 #pragma once
@@ -16,13 +16,13 @@
 #include <cmath>
 #include <cstring>
 
-#include "hinge/fast/assemble.hpp"
-#include "hinge/fast/hinge_kernel.hpp"
-#include "hinge/fast/lanes.hpp"
+#include "generic_kernel.hpp"
+#include "lanes.hpp"
+#include "passes.hpp"
 
 namespace hinge::fast::detail {
 
-// face_pass_body (assemble.hpp) for faces [begin, end) of a double mesh.
+// face_pass_body (passes.hpp) for faces [begin, end) of a double mesh.
 template <class L>
 HINGE_FAST_INLINE void face_pass_lanes(const Mesh& mesh, const Pattern& pattern, std::size_t begin, std::size_t end,
                                        std::array<double, 4>* face, char* suspect) {

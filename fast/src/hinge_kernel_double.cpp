@@ -1,4 +1,4 @@
-// The double per-hinge kernel (hinge/fast/hinge_kernel.hpp) across eight lanes (hinge_kernel_lanes.hpp),
+// The double per-hinge kernel (hinge/fast/hinge_kernel.hpp, isa.hpp) across eight lanes (hinge_kernel_lanes.hpp),
 // compiled three times: for x86-64-v4 (AVX-512: one register per eight lanes), x86-64-v3 (AVX2 and a
 // hardware fused multiply-add: two registers) and the baseline x86-64 (which calls libm's fma). The
 // choice is made once, at the first call; the results are the same bits either way (lane-by-lane IEEE
@@ -8,7 +8,8 @@
 #include <cmath>
 #include <limits>
 
-#include "hinge/fast/dispatch.hpp"
+#include "dispatch.hpp"
+#include "double_kernel.hpp"
 #include "hinge_kernel_lanes.hpp"
 
 namespace hinge::fast::detail {
@@ -45,8 +46,8 @@ void rescaled_baseline(const std::array<double, 12>* const* x, bool h, HingeDeri
 }
 
 // pair: two hinges at once (lanes.hpp, Twice), for AVX-512 only: there one hinge's lanes are one register
-// of 32, and two at once measured 4-8% faster per hinge than one by one (fast/README.md); AVX2 and the
-// baseline hold one hinge's lanes in two registers of 16 already (not tried: two hinges would spill more).
+// of 32, and two at once take 4-8% less time per hinge than one by one (docs/performance-log.md); AVX2 and
+// the baseline hold one hinge's lanes in two registers of 16 already.
 struct Kernels {
   Kernel common, rescaled, pair;
 };
@@ -59,16 +60,13 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
   const std::array<double, 12>* xs[1] = {&x};
   HingeDerivatives<double>* outs[1] = {&out};
   if (o.status == LanesOutcome::rescale) [[unlikely]] kernels.rescaled(xs, want_hessian, outs, &o);
-  if (o.status == LanesOutcome::not_finite) throw_not_finite(x);
-  if (o.status == LanesOutcome::zero_hinge_edge)
-    throw InputError("degenerate hinge: the hinge edge has zero length (x1 == x2)");
+  if (o.status == LanesOutcome::not_finite) check_finite(x);  // throws, naming the coordinate
+  if (o.status == LanesOutcome::zero_hinge_edge) throw_zero_hinge_edge();
   // Validity and the sign, exactly where the filters could not decide (the generic kernel's checks, in
   // the same order and with the same messages).
   const Point x0{x[0], x[1], x[2]}, x1{x[3], x[4], x[5]}, x2{x[6], x[7], x[8]}, x3{x[9], x[10], x[11]};
-  if (!o.certain_upper && zero_area_exact(x0, x1, x2))
-    throw InputError("degenerate hinge: the upper triangle (x0, x1, x2) has zero area");
-  if (!o.certain_lower && zero_area_exact(x3, x2, x1))
-    throw InputError("degenerate hinge: the lower triangle (x3, x2, x1) has zero area");
+  if (!o.certain_upper && zero_area_exact(x0, x1, x2)) throw_zero_area(true);
+  if (!o.certain_lower && zero_area_exact(x3, x2, x1)) throw_zero_area(false);
   const int sign = o.sign != kUndecided ? o.sign : hinge_orientation_exact(x0, x1, x2, x3);
   if (sign == 0) {  // coplanar: theta is 0 or pi exactly
     out.on_branch_cut = o.folded;
@@ -132,21 +130,33 @@ void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, boo
   evaluate_all(best_kernels(), x, count, want_hessian, out);
 }
 
-bool hinge_kernel_double(KernelIsa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
+}  // namespace hinge::fast::detail
+
+namespace hinge::fast {
+
+std::string_view isa_name(Isa isa) {
   switch (isa) {
-    case KernelIsa::avx512:
-      if (!has_x86_64_v4()) return false;
-      evaluate(kAvx512, x, want_hessian, out);
-      return true;
-    case KernelIsa::avx2:
-      if (!has_x86_64_v3()) return false;
-      evaluate(kAvx2, x, want_hessian, out);
-      return true;
-    case KernelIsa::baseline:
-      evaluate(kBaseline, x, want_hessian, out);
-      return true;
+    case Isa::baseline: return "baseline";
+    case Isa::avx2: return "avx2";
+    case Isa::avx512: return "avx512";
+  }
+  return "?";
+}
+
+bool isa_available(Isa isa) {
+  switch (isa) {
+    case Isa::baseline: return true;
+    case Isa::avx2: return detail::has_x86_64_v3();
+    case Isa::avx512: return detail::has_x86_64_v4();
   }
   return false;
 }
 
-}  // namespace hinge::fast::detail
+bool hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
+  if (!isa_available(isa)) return false;
+  detail::evaluate(isa == Isa::avx512 ? detail::kAvx512 : isa == Isa::avx2 ? detail::kAvx2 : detail::kBaseline, x,
+                   want_hessian, out);
+  return true;
+}
+
+}  // namespace hinge::fast

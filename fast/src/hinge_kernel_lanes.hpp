@@ -31,8 +31,8 @@
 #include <cmath>
 #include <limits>
 
-#include "hinge/fast/hinge_kernel.hpp"
-#include "hinge/fast/lanes.hpp"
+#include "generic_kernel.hpp"
+#include "lanes.hpp"
 
 namespace hinge::fast::detail {
 

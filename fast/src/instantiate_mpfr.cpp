@@ -1,11 +1,7 @@
 // Explicit instantiations of hinge::fast for mpfr (run-time precision).
-#include "hinge/fast/assemble.hpp"
-#include "hinge/fast/hinge_kernel.hpp"
+#include "assembler_impl.hpp"
+#include "hinge_kernel_impl.hpp"
 
-namespace hinge::fast {
+HINGE_FAST_HINGE_INSTANTIATE(hinge::mpfr)
 
-template HingeDerivatives<mpfr> hinge_derivatives<mpfr>(const std::array<double, 12>&, bool);
-
-template class Assembler<mpfr>;
-
-}  // namespace hinge::fast
+template class hinge::fast::Assembler<hinge::mpfr>;

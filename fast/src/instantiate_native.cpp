@@ -1,14 +1,10 @@
-// Explicit instantiations of hinge::fast for float and double (double's per-hinge kernel: see
+// Explicit instantiations of hinge::fast for float and double (double's per-hinge kernel itself:
 // hinge_kernel_double.cpp). One unit per scalar family keeps builds short on two cores.
-#include "hinge/fast/assemble.hpp"
-#include "hinge/fast/hinge_kernel.hpp"
+#include "assembler_impl.hpp"
+#include "hinge_kernel_impl.hpp"
 
-namespace hinge::fast {
+HINGE_FAST_HINGE_INSTANTIATE(float)
+HINGE_FAST_HINGE_INSTANTIATE(double)
 
-template HingeDerivatives<float> hinge_derivatives<float>(const std::array<double, 12>&, bool);
-template HingeDerivatives<double> hinge_derivatives<double>(const std::array<double, 12>&, bool);
-
-template class Assembler<float>;
-template class Assembler<double>;
-
-}  // namespace hinge::fast
+template class hinge::fast::Assembler<float>;
+template class hinge::fast::Assembler<double>;

@@ -1,15 +1,11 @@
 // Explicit instantiations of hinge::fast for long double, float128 and bin128.
-#include "hinge/fast/assemble.hpp"
-#include "hinge/fast/hinge_kernel.hpp"
+#include "assembler_impl.hpp"
+#include "hinge_kernel_impl.hpp"
 
-namespace hinge::fast {
+HINGE_FAST_HINGE_INSTANTIATE(long double)
+HINGE_FAST_HINGE_INSTANTIATE(hinge::float128)
+HINGE_FAST_HINGE_INSTANTIATE(hinge::bin128)
 
-template HingeDerivatives<long double> hinge_derivatives<long double>(const std::array<double, 12>&, bool);
-template HingeDerivatives<float128> hinge_derivatives<float128>(const std::array<double, 12>&, bool);
-template HingeDerivatives<bin128> hinge_derivatives<bin128>(const std::array<double, 12>&, bool);
-
-template class Assembler<long double>;
-template class Assembler<float128>;
-template class Assembler<bin128>;
-
-}  // namespace hinge::fast
+template class hinge::fast::Assembler<long double>;
+template class hinge::fast::Assembler<hinge::float128>;
+template class hinge::fast::Assembler<hinge::bin128>;

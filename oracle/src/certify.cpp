@@ -207,8 +207,7 @@ CertifiedTheta certify(const ExactHinge& e, const Options& options) {
       else enclosure[k] = scale2(Interval(*num) / (is_grad ? g_scale : h_scale), shift);
       const Rounding r = detail::round_enclosure(enclosure[k]);
       if (r.verdict == Verdict::overflow)
-        throw DomainError(std::string(k == 0 ? "theta" : is_grad ? "the gradient" : "the Hessian") +
-                          " is outside the range of double");
+        throw_outside_double(k == 0 ? "theta" : is_grad ? "the gradient" : "the Hessian");
       if (r.verdict == Verdict::rounded) {
         settle(k, r.value);
         if (r.tie) ++out.ties;
@@ -218,7 +217,7 @@ CertifiedTheta certify(const ExactHinge& e, const Options& options) {
       double rounded = 0;
       bool tie = false, overflow = false;
       if (k > 0 && exact_round(*num, den, e.s, shift, r.lo, r.hi, rounded, tie, overflow)) {
-        if (overflow) throw DomainError(std::string(is_grad ? "the gradient" : "the Hessian") + " is outside the range of double");
+        if (overflow) throw_outside_double(is_grad ? "the gradient" : "the Hessian");
         settle(k, rounded);
         if (tie) ++out.ties;
         ++out.decided_exactly;

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <limits>
 #include <ostream>
+#include <span>
+#include <stdexcept>
 
 #include "hinge/oracle/conformance.hpp"
 #include "hinge_intervals.hpp"
@@ -19,10 +21,21 @@ using detail::Real;
 constexpr double u = 0x1p-53;
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// ||v||_2 without overflow or underflow: scaled by the largest magnitude (fixed order of operations).
+// The largest magnitude, NaN when a value is NaN.
+template <class Values>
+double largest_magnitude(const Values& values) {
+  double largest = 0;
+  for (const double v : values)
+    if (!(std::fabs(v) <= largest)) largest = std::isnan(v) ? v : std::fabs(v);
+  return largest;
+}
+
+// ||v||_2 without overflow or underflow: scaled by the largest magnitude (fixed order of operations); NaN
+// when an entry is.
 double norm(const double* v, std::size_t n) {
   double largest = 0;
-  for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, std::fabs(v[i]));
+  for (std::size_t i = 0; i < n && !std::isnan(largest); ++i)
+    if (!(std::fabs(v[i]) <= largest)) largest = std::isnan(v[i]) ? v[i] : std::fabs(v[i]);
   if (largest == 0 || !std::isfinite(largest)) return largest;
   double sum = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -133,10 +146,18 @@ Expected expected(const Case& c) {
   return e;
 }
 
+double normwise_error(const double* candidate, const double* certified, std::size_t n, double scale_if_zero) {
+  std::array<double, 144> difference{};
+  if (n > difference.size()) throw std::invalid_argument("normwise_error: at most 144 values");
+  for (std::size_t i = 0; i < n; ++i) difference[i] = candidate[i] - certified[i];
+  const double size = norm(certified, n);
+  const double normalizer = size > 0 ? size : scale_if_zero;
+  const double d = norm(difference.data(), n);
+  return d == 0 ? 0.0 : normalizer > 0 && std::isfinite(d) ? d / normalizer / u : infinity;
+}
+
 double symmetric_frobenius(const Eigen::SparseMatrix<double>& upper) {
-  double largest = 0;
-  for (Eigen::Index c = 0; c < upper.outerSize(); ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(upper, c); it; ++it) largest = std::max(largest, std::fabs(it.value()));
+  const double largest = largest_magnitude(std::span<const double>(upper.valuePtr(), static_cast<std::size_t>(upper.nonZeros())));
   if (largest == 0 || !std::isfinite(largest)) return largest;
   double sum = 0;
   for (Eigen::Index c = 0; c < upper.outerSize(); ++c)
@@ -157,11 +178,29 @@ double gradient_kappa_sum(const CertifiedMesh& m) {
   return size > 0 ? m.gradient_contributions / size : 1.0;
 }
 
-void check_finite(CandidateResult& r) {
-  if (r.status != CandidateResult::Status::ok) return;
-  for (int g = 0; g < 3; ++g)
-    for (std::size_t i = 0; i < group_size[g]; ++i)
-      if (!std::isfinite(group_data(r, g)[i])) r.status = CandidateResult::Status::nonfinite;
+MeshComparison compare_mesh_hessian(const CertifiedMesh& m, const Eigen::SparseMatrix<double>& candidate_upper) {
+  const Eigen::SparseMatrix<double> difference = candidate_upper - m.rounded.hessian;  // over the union of patterns
+  const double size = symmetric_frobenius(m.rounded.hessian);
+  MeshComparison c;
+  c.kappa_sum = hessian_kappa_sum(m);
+  c.error = symmetric_frobenius(difference) / (size > 0 ? size : 1) / u;
+  c.tolerance = mesh_base * c.kappa_sum;
+  c.pass = std::isfinite(c.error) && c.error <= c.tolerance;
+  return c;
+}
+
+MeshComparison compare_mesh_gradient(const CertifiedMesh& m, const std::vector<double>& candidate) {
+  const std::vector<double>& want = m.rounded.gradient;
+  if (candidate.size() != want.size()) throw std::invalid_argument("compare_mesh_gradient: sizes differ");
+  std::vector<double> difference(want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) difference[i] = candidate[i] - want[i];
+  const double size = norm(want.data(), want.size());
+  MeshComparison c;
+  c.kappa_sum = gradient_kappa_sum(m);
+  c.error = norm(difference.data(), difference.size()) / (size > 0 ? size : 1) / u;
+  c.tolerance = mesh_base * c.kappa_sum;
+  c.pass = std::isfinite(c.error) && c.error <= c.tolerance;
+  return c;
 }
 
 CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& policy) {
@@ -186,11 +225,7 @@ CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& p
       difference[i] = got[i] - want[i];
       if (std::fabs(difference[i]) > std::fabs(difference[largest]) || std::isnan(difference[i])) largest = static_cast<int>(i);
     }
-    // Normwise, in units of u relative to ||f||_2, or to scale_f where f is exactly zero.
-    const double size = norm(want, group_size[g]);
-    const double normalizer = size > 0 ? size : e.conditioning.scale[g];
-    const double d = norm(difference.data(), group_size[g]);
-    o.error[g] = d == 0 ? 0.0 : normalizer > 0 && std::isfinite(d) ? d / normalizer / u : infinity;
+    o.error[g] = normwise_error(got, want, group_size[g], e.conditioning.scale[g]);
     const double ratio = o.error[g] / o.tolerance[g];
     if (ratio > o.ratio) {
       o.ratio = ratio;

@@ -377,7 +377,7 @@ void boundary_meshes(Builder& b) {
   for (const MeshCase& m : meshes()) {
     const Topology t = build_topology(m.deformed);
     for (std::size_t h = 0; h < t.hinges.size(); ++h)
-      b.add(m.name + "-hinge" + std::to_string(h), reference::hinge_coordinates(m.deformed, t.hinges[h]));
+      b.add(m.name + "-hinge" + std::to_string(h), hinge_coordinates(m.deformed, t.hinges[h]));
   }
 }
 

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "hinge/reference/errors.hpp"
+#include "hinge/reference/hinge_checks.hpp"
 
 namespace hinge::oracle {
 namespace {
@@ -76,13 +77,11 @@ V3 vertex(const ScaledHinge& x, int v) { return {x.X[3 * v], x.X[3 * v + 1], x.X
 }  // namespace
 
 ScaledHinge scale_exactly(const std::array<double, 12>& x) {
-  static const char* const names[12] = {"x0.x", "x0.y", "x0.z", "x1.x", "x1.y", "x1.z",
-                                        "x2.x", "x2.y", "x2.z", "x3.x", "x3.y", "x3.z"};
   // x = m 2^e with an integer |m| < 2^53; then X = m 2^(e - e_min), F = -e_min.
   std::array<long, 12> mantissa{}, exponent{};
   long e_min = LONG_MAX;
   for (int i = 0; i < 12; ++i) {
-    if (!std::isfinite(x[i])) throw InputError(std::string("coordinate ") + names[i] + " is not finite");
+    if (!std::isfinite(x[i])) check_finite(x);  // throws, naming the first non-finite coordinate
     if (x[i] == 0) continue;
     int e = 0;
     const double f = std::frexp(x[i], &e);  // x = f 2^e, 0.5 <= |f| < 1
@@ -125,15 +124,15 @@ ExactHinge exact_hinge(const ScaledHinge& x, bool with_hessian) {
   const V3 x0 = vertex(x, 0), x1 = vertex(x, 1), x2 = vertex(x, 2), x3 = vertex(x, 3);
   const V3 e0 = sub(x2, x1), e1 = sub(x0, x2), e2 = sub(x1, x0);  // Fig. 1, upper triangle
   const V3 et1 = sub(x3, x2), et2 = sub(x1, x3);                   // lower triangle: e~1, e~2
-  if (is_zero(e0)) throw InputError("degenerate hinge: the hinge edge has zero length (x1 == x2)");
+  if (is_zero(e0)) throw_zero_hinge_edge();
   const V3 N = cross(e2, neg(e1));    // (x1 - x0) x (x2 - x0)
   const V3 Nt = cross(neg(et1), et2);  // (x2 - x3) x (x1 - x3)
   ExactHinge r;
   r.F = x.F;
   r.nn = dot(N, N);
   r.tt = dot(Nt, Nt);
-  if (sgn(r.nn) == 0) throw InputError("degenerate hinge: the upper triangle (x0, x1, x2) has zero area");
-  if (sgn(r.tt) == 0) throw InputError("degenerate hinge: the lower triangle (x3, x2, x1) has zero area");
+  if (sgn(r.nn) == 0) throw_zero_area(true);
+  if (sgn(r.tt) == 0) throw_zero_area(false);
   const Int& nn = r.nn;
   const Int& tt = r.tt;
   r.s = dot(e0, e0);

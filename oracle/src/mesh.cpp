@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "hinge/reference/assemble_impl.hpp"
+#include "hinge/reference/hinge_checks.hpp"
 #include "hinge/reference/errors.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"
@@ -36,9 +36,7 @@ PsiEnclosure psi(Model model, const Interval& k, const Interval& kd, const Inter
     }
     case Model::tan:
     case Model::viscoelastic: {  // eq. (8): psi = k a (phi - phi_bar)^2, phi = 2 t, t = tan(theta / 2)
-      if (angle.branch_cut)
-        throw DomainError("the " + std::string(reference::model_name(model)) +
-                          " energy is infinite at theta = +-pi (hinge folded flat onto itself)");
+      if (angle.branch_cut) reference::throw_infinite_energy(model);
       const Interval& t = angle.tan_half;
       const Interval one(1.0);
       const Interval dphi = one + t * t, d2phi = t * dphi;
@@ -64,11 +62,6 @@ PsiEnclosure psi(Model model, const Interval& k, const Interval& kd, const Inter
   throw std::invalid_argument("unknown energy model");
 }
 
-void check_same_faces(const Mesh& mesh, const Topology& topology, const char* what) {
-  if (mesh.vertices.size() != topology.vertex_count || mesh.faces != topology.faces)
-    throw InputError(std::string("the ") + what + " mesh must have the same vertices (count) and faces as the deformed mesh");
-}
-
 double midpoint(const Interval& v) {
   detail::Real m(mpfi_get_prec(v.get()));
   mpfi_mid(m.get(), v.get());
@@ -84,8 +77,8 @@ std::string entry_name(Eigen::Index r, Eigen::Index c) {
 
 CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
                              const reference::EnergyParameters& parameters, unsigned request, const Options& options) {
-  check_same_faces(deformed, topology, "deformed");
-  check_same_faces(rest, topology, "rest");
+  check_same_mesh(deformed, topology, "deformed");
+  check_same_mesh(rest, topology, "rest");
   const bool want_grad = request & reference::want_gradient, want_hess = request & reference::want_hessian;
   const Model model = parameters.model;
   const auto hinge_count = static_cast<Index>(topology.hinges.size());
@@ -98,16 +91,14 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
   rest_exact.reserve(topology.hinges.size());
   exact.reserve(topology.hinges.size());
   for (Index i = 0; i < hinge_count; ++i)
-    reference::detail::for_hinge(topology, i, [&] {
-      rest_exact.push_back(exact_hinge(reference::hinge_coordinates(rest, topology.hinges[i]), false));
+    for_hinge(topology, i, [&] {
+      rest_exact.push_back(exact_hinge(hinge_coordinates(rest, topology.hinges[i]), false));
       const ExactHinge& r = rest_exact.back();
-      if (reference::infinite_at_pi(model) && sgn(r.Y) == 0 && sgn(r.X) < 0)
-        throw DomainError("rest hinge is folded flat (theta_bar = pi): the " + std::string(reference::model_name(model)) +
-                          " energy needs theta_bar in (-pi, pi) (eq. 10)");
+      if (reference::infinite_at_pi(model) && sgn(r.Y) == 0 && sgn(r.X) < 0) reference::throw_folded_rest(model);
     });
   for (Index i = 0; i < hinge_count; ++i)
-    reference::detail::for_hinge(topology, i, [&] {
-      exact.push_back(exact_hinge(reference::hinge_coordinates(deformed, topology.hinges[i]), want_hess));
+    for_hinge(topology, i, [&] {
+      exact.push_back(exact_hinge(hinge_coordinates(deformed, topology.hinges[i]), want_hess));
       equal.push_back(detail::same_angle(exact.back(), rest_exact[i]));
     });
 
@@ -126,7 +117,7 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
 
     for (Index i = 0; i < hinge_count; ++i) {
       const Hinge& hinge = topology.hinges[i];
-      reference::detail::for_hinge(topology, i, [&] {
+      for_hinge(topology, i, [&] {
         const ExactHinge& r = rest_exact[i];
         const ExactHinge& e = exact[i];
         const Interval rest_l0 = sqrt(Interval(r.s));
@@ -194,7 +185,7 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
     const bool at_cap = bits >= cap;
     auto settle = [&](const Interval& v, const std::string& name, const char* what) -> double {
       const Rounding r = detail::round_enclosure(v);
-      if (r.verdict == Verdict::overflow) throw DomainError(std::string(what) + " is outside the range of double");
+      if (r.verdict == Verdict::overflow) throw_outside_double(what);
       if (r.verdict == Verdict::rounded) return r.value;
       open = true;
       if (at_cap) {

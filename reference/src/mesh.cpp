@@ -150,6 +150,13 @@ Topology build_topology(const Mesh& mesh) {
   return t;
 }
 
+std::array<double, 12> hinge_coordinates(const Mesh& mesh, const Hinge& h) {
+  std::array<double, 12> x;
+  for (int a = 0; a < 4; ++a)
+    for (int c = 0; c < 3; ++c) x[3 * a + c] = mesh.vertices[h.x[a]][c];
+  return x;
+}
+
 void check_faces_nondegenerate(const Mesh& mesh) {
   check_face_indices(mesh, false);  // a repeated index is reported below, as zero area
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {

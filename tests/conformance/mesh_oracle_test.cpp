@@ -7,6 +7,7 @@
 
 #include "hinge/oracle/conformance.hpp"
 #include "hinge/oracle/mesh.hpp"
+#include "hinge/reference/rounded.hpp"
 #include "hinge/reference/errors.hpp"
 
 namespace hinge::oracle {

@@ -75,8 +75,8 @@ void expect_agrees_with_reference(const X12& x, unsigned bits, const std::string
 }
 
 TEST(Oracle, ReproducesTheContractExamples) {
-  const auto inputs = read_lines(HINGE_SHARED_DIR "/spec/examples/eval-input.jsonl");
-  const auto want = read_lines(HINGE_SHARED_DIR "/spec/examples/oracle-output.jsonl");
+  const auto inputs = read_lines(HINGE_EXAMPLES_DIR "/eval-input.jsonl");
+  const auto want = read_lines(HINGE_EXAMPLES_DIR "/oracle-output.jsonl");
   ASSERT_EQ(inputs.size(), 3u);
   ASSERT_EQ(want.size(), 3u);
   for (std::size_t k = 0; k < inputs.size(); ++k) {

@@ -13,6 +13,7 @@
 #include "fast_support.hpp"
 #include "support/tolerance.hpp"
 #include "hinge/fast/assemble.hpp"
+#include "src/assembly_plan.hpp"  // detail::plan_assembly
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
 
@@ -368,7 +369,7 @@ std::pair<double, double> term_scales(const Mesh& mesh, const Topology& t,
                                       const std::vector<reference::HingeCoefficients<double>>& c, Model model) {
   double gradient = 0, hessian = 0;
   for (std::size_t h = 0; h < t.hinges.size(); ++h) {
-    const auto d = reference::theta_derivatives<double>(reference::hinge_coordinates(mesh, t.hinges[h]));
+    const auto d = reference::theta_derivatives<double>(hinge_coordinates(mesh, t.hinges[h]));
     const auto p = reference::psi(model, c[h], d.angle);
     const double sensitivity = std::fabs(p.d2 * d.angle.theta);
     gradient += (std::fabs(p.d1) + sensitivity) * d.grad.norm();

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "fast_support.hpp"
-#include "hinge/fast/exact.hpp"
+#include "src/exact.hpp"
 
 namespace hinge::fast {
 namespace {

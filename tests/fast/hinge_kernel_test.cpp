@@ -16,6 +16,8 @@
 
 #include "fast_support.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
+#include "hinge/fast/isa.hpp"
+#include "src/generic_kernel.hpp"  // detail::wide_range_kernel
 #include "hinge/reference/evaluate.hpp"
 #include "support/hinges.hpp"
 #include "support/tolerance.hpp"
@@ -379,10 +381,10 @@ TEST(HingeKernel, EveryInstructionSetGivesTheSameBits) {
   for (const auto& x : hinges)
     for (bool want_hessian : {true, false}) {
       HingeDerivatives<double> base;
-      ASSERT_TRUE(detail::hinge_kernel_double(detail::KernelIsa::baseline, x, want_hessian, base));
-      for (auto isa : {detail::KernelIsa::avx2, detail::KernelIsa::avx512}) {
+      ASSERT_TRUE(hinge_derivatives(Isa::baseline, x, want_hessian, base));
+      for (auto isa : {Isa::avx2, Isa::avx512}) {
         HingeDerivatives<double> d;
-        if (!detail::hinge_kernel_double(isa, x, want_hessian, d)) continue;
+        if (!hinge_derivatives(isa, x, want_hessian, d)) continue;
         ++compared;
         EXPECT_EQ(std::bit_cast<std::uint64_t>(d.theta), std::bit_cast<std::uint64_t>(base.theta)) << test::describe(x);
         EXPECT_EQ(d.on_branch_cut, base.on_branch_cut);
@@ -395,10 +397,10 @@ TEST(HingeKernel, EveryInstructionSetGivesTheSameBits) {
   for (const auto& bad : {std::array<double, 12>{0.5, 1, 0, 1, 0, 0, 1, 0, 0, 0.5, -1, 0},
                           std::array<double, 12>{0, 0, 0, 1, 0, 0, 2, 0, 0, 0.5, -1, 0},
                           std::array<double, 12>{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, NAN, 0}})
-    for (auto isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2, detail::KernelIsa::avx512}) {
+    for (auto isa : {Isa::baseline, Isa::avx2, Isa::avx512}) {
       HingeDerivatives<double> d;
       bool available = true;  // stays true when the kernel throws
-      const std::string message = input_error([&] { available = detail::hinge_kernel_double(isa, bad, true, d); });
+      const std::string message = input_error([&] { available = hinge_derivatives(isa, bad, true, d); });
       if (available) {
         EXPECT_EQ(message, input_error([&] { hinge_derivatives<double>(bad); }));
       }

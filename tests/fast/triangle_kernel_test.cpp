@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "fast_support.hpp"
-#include "hinge/fast/triangle_kernel.hpp"
+#include "src/triangle_kernel.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
 
@@ -26,7 +26,7 @@ Eigen::MatrixXd dense_from_triangles(const Mesh& mesh, const Topology& t,
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(size, size);
   std::vector<double> psi1(t.hinges.size()), psi2(t.hinges.size());
   for (std::size_t h = 0; h < t.hinges.size(); ++h) {
-    const auto d = reference::theta_derivatives<double>(reference::hinge_coordinates(mesh, t.hinges[h]), false);
+    const auto d = reference::theta_derivatives<double>(hinge_coordinates(mesh, t.hinges[h]), false);
     const auto p = reference::psi(model, c[h], d.angle);
     psi1[h] = p.d1;
     psi2[h] = p.d2;

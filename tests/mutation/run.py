@@ -33,8 +33,8 @@ DOCS = ROOT / "docs" / "testing.md"
 BEGIN, END = "<!-- mutation-table: begin (tests/mutation/run.py --update-docs) -->", "<!-- mutation-table: end -->"
 
 # Source folders and files copied to the private tree (everything CMake may need to configure).
-COPIED = ["CMakeLists.txt", "CMakePresets.json", "cmake", "reference", "fast", "oracle", "proofs", "tools",
-          "tests", "bench", "conformance"]
+COPIED = ["CMakeLists.txt", "CMakePresets.json", "cmake", "reference", "io", "fast", "oracle", "capi", "methods", "proofs", "tools",
+          "tests", "bench", "conformance", "docs"]
 
 
 class Mutant:
@@ -111,10 +111,6 @@ def copy_tree():
             shutil.copytree(p, SRC / name, ignore=ignore)
         elif p.is_file():
             shutil.copy2(p, SRC / name)
-    # ../shared is referenced relative to the project (PROJECT_SOURCE_DIR/../shared): link it beside the copy.
-    shared = ROOT.parent / "shared"
-    if shared.exists() and not (WORK / "shared").exists():
-        os.symlink(shared, WORK / "shared")
 
 
 def configure():

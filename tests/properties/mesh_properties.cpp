@@ -164,7 +164,7 @@ RC_GTEST_PROP(ReferenceMesh, ReversingEveryFaceNegatesThetaAndKeepsTheEnergy, ()
     const double units = scalar_units(t, -a.theta[i], 0x1p-53, 1.0);
     worst = std::max(worst, units);
     if (!(units <= bound))
-      RC_FAIL(Report(property, reference::hinge_coordinates(mc.deformed, h))
+      RC_FAIL(Report(property, hinge_coordinates(mc.deformed, h))
                   .line("hinge " + std::to_string(i) + " of the mesh (edge " + std::to_string(h.x[1]) + "-" +
                         std::to_string(h.x[2]) + ")")
                   .value("theta", a.theta[i])

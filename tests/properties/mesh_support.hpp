@@ -54,7 +54,7 @@ void measure_scales(const Mesh& deformed, const std::vector<reference::HingeCoef
                     reference::Model model, MeshEvaluation<S>& out) {
   out.theta.clear();
   for (std::size_t i = 0; i < out.topology.hinges.size(); ++i) {
-    const Coordinates x = reference::hinge_coordinates(deformed, out.topology.hinges[i]);
+    const Coordinates x = hinge_coordinates(deformed, out.topology.hinges[i]);
     const auto d = reference::theta_derivatives<double>(x);
     const auto p = reference::psi(model, coefficients[i], d.angle);
     const double w = std::abs(p.d1) + std::abs(p.d2), g = d.grad.norm();

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "hinge/reference/energy.hpp"
+#include "hinge/reference/hinge_energy.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "support/hinges.hpp"
 

@@ -1,4 +1,4 @@
-// The worked examples of ../shared/spec/examples: the reference in MPFR at 256 bits, rounded to double,
+// The worked examples of docs/examples: the reference in MPFR at 256 bits, rounded to double,
 // reproduces the contract's independent evaluation exactly (every output equal as a value).
 #include <gtest/gtest.h>
 
@@ -20,8 +20,8 @@ std::vector<nlohmann::json> read_lines(const std::string& path) {
 }
 
 TEST(OracleExamples, ReferenceInMpfr256RoundsToTheContractValues) {
-  const auto inputs = read_lines(HINGE_SHARED_DIR "/spec/examples/eval-input.jsonl");
-  const auto outputs = read_lines(HINGE_SHARED_DIR "/spec/examples/oracle-output.jsonl");
+  const auto inputs = read_lines(HINGE_EXAMPLES_DIR "/eval-input.jsonl");
+  const auto outputs = read_lines(HINGE_EXAMPLES_DIR "/oracle-output.jsonl");
   ASSERT_EQ(inputs.size(), 3u);
   ASSERT_EQ(outputs.size(), inputs.size());
   for (std::size_t k = 0; k < inputs.size(); ++k) {

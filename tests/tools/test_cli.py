@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The `hinge` command against CONVENTIONS.md: formats, per-line errors, exit statuses, output files.
 
-Usage: test_cli.py HINGE_BINARY SHARED_DIR. Each check is a function test_*; the script runs them all,
+Usage: test_cli.py HINGE_BINARY EXAMPLES_DIR (docs/examples). Each check is a function test_*; the script runs them all,
 prints one line per check and "N passed, M failed", and exits nonzero if any failed.
 """
 import json
@@ -11,8 +11,7 @@ import subprocess
 import sys
 import tempfile
 
-HINGE, SHARED = sys.argv[1], sys.argv[2]
-EXAMPLES = os.path.join(SHARED, "spec", "examples")
+HINGE, EXAMPLES = sys.argv[1], sys.argv[2]
 
 
 def run(args, stdin=""):

@@ -10,10 +10,13 @@
 #pragma once
 
 #include <array>
+#include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "hinge/io/eval_output.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
 
@@ -75,18 +78,9 @@ struct Policy {
   double c = 4;      // growth with the conditioning
 };
 
-// A candidate's answer for one case.
-struct CandidateResult {
-  enum class Status { missing, error, nonfinite, ok };
-  Status status = Status::missing;
-  std::string error;  // the candidate's message for Status::error
-  double theta = 0;
-  std::array<double, 12> grad{};
-  std::array<double, 144> hess{};
-};
-
-// Whether every number of r is finite (else r.status becomes nonfinite).
-void check_finite(CandidateResult& r);
+// A candidate's answer for one case: a line of `hinge eval` output (read from a file, or made from a
+// plugin's outputs).
+using CandidateResult = io::EvalOutput;
 
 struct CaseOutcome {
   std::string id, category;
@@ -102,6 +96,11 @@ struct CaseOutcome {
 };
 
 CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& policy);
+
+// The normwise error of one output group (n <= 144 values), ||candidate - certified||_2 / ||certified||_2
+// in units of 2^-53, relative to `scale_if_zero` where the certified group is exactly zero (conformance
+// uses scale_f); 0 when the two are equal, infinity when the difference is not finite.
+double normwise_error(const double* candidate, const double* certified, std::size_t n, double scale_if_zero);
 
 struct CategorySummary {
   std::string category;
@@ -123,10 +122,27 @@ bool print_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, c
 // (H_h: hinge h's contribution; likewise for the gradient). Passes when error <= mesh_base * kappa_sum.
 inline constexpr double mesh_base = 16;
 
-// ||H||_F of a symmetric matrix stored as its upper triangle (off-diagonal entries count twice).
+// ||H||_F of a symmetric matrix stored as its upper triangle (off-diagonal entries count twice); NaN
+// when an entry is.
 double symmetric_frobenius(const Eigen::SparseMatrix<double>& upper);
 // kappa_sum of the certified mesh's Hessian and gradient (1 where they are zero).
 double hessian_kappa_sum(const CertifiedMesh& m);
 double gradient_kappa_sum(const CertifiedMesh& m);
+
+// A candidate's mesh Hessian (upper triangle, any pattern: an entry left out is a zero) or gradient
+// against the certified one: error ||candidate - certified|| / ||certified|| in units of 2^-53 (relative to
+// 1 where the certified output is zero), tolerance mesh_base * kappa_sum, pass when the error is finite
+// and within it.
+struct MeshComparison {
+  double error = 0, kappa_sum = 1, tolerance = 0;
+  bool pass = false;
+};
+MeshComparison compare_mesh_hessian(const CertifiedMesh& m, const Eigen::SparseMatrix<double>& candidate_upper);
+MeshComparison compare_mesh_gradient(const CertifiedMesh& m, const std::vector<double>& candidate);
+
+// Regenerates the committed vectors (conformance/: docs/conformance-format.md) under `dir`, bit for bit:
+// hinges/<category>.jsonl, meshes/*.obj, *.mtx, *.gradient.txt and meshes/meshes.jsonl. `progress(done,
+// total)` is called after each hinge case. Throws std::logic_error if a vector cannot be certified.
+void write_vectors(const std::filesystem::path& dir, const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 }  // namespace hinge::oracle::conformance

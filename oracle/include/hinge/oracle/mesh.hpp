@@ -15,8 +15,9 @@
 #include <vector>
 
 #include "hinge/oracle/oracle.hpp"
-#include "hinge/reference/assemble.hpp"
-#include "hinge/reference/rounded.hpp"
+#include "hinge/reference/energy.hpp"
+#include "hinge/reference/mesh.hpp"
+#include "hinge/reference/results.hpp"
 
 namespace hinge::oracle {
 

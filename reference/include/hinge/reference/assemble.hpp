@@ -1,5 +1,5 @@
-// hinge/reference/assemble.hpp: a mesh's bending energy E = sum_i psi_i(theta_i) (eq. 1), its gradient
-// and Hessian (eqs. 2-3), assembled hinge by hinge: the plain baseline that hinge::fast is measured
+// hinge/reference/assemble.hpp: a mesh's bending energy E = sum_i psi_i(theta_i) (eq. (1)), its gradient
+// and Hessian (eqs. (2)-(3)), assembled hinge by hinge: the plain baseline that hinge::fast is measured
 // against. Each hinge adds its 10 upper 3x3 blocks (4 diagonal, 6 off-diagonal) as triplets; the
 // matrix is compressed once at the end (10E block updates, the paper's section 4.2).
 //
@@ -11,25 +11,11 @@
 #include <vector>
 
 #include "hinge/reference/energy.hpp"
+#include "hinge/reference/hinge_energy.hpp"
 #include "hinge/reference/mesh.hpp"
+#include "hinge/reference/results.hpp"
 
 namespace hinge::reference {
-
-// What to compute; anything not requested is left empty (and costs nothing).
-enum Request : unsigned { want_energy = 1u, want_gradient = 2u, want_hessian = 4u, want_all = 7u };
-
-struct EnergyParameters {
-  Model model = Model::tan;
-  double k = 1;            // bending stiffness (or bending_stiffness(Y, nu, h), eq. 11)
-  double k_d_over_dt = 0;  // viscoelastic only: k_d / dt
-};
-
-template <class Scalar>
-struct MeshDerivatives {
-  Scalar energy = 0;
-  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> gradient;  // dE/dx, 3n (empty unless requested)
-  Eigen::SparseMatrix<Scalar> hessian;                // upper triangle of d2E/dx2 (empty unless requested)
-};
 
 // Algorithm 1 on the rest mesh (same faces as `topology`, same vertex count): a, theta_bar, phi_bar per
 // hinge, in the order of topology.hinges. Throws InputError (naming the hinge's edge and faces) for a
@@ -49,9 +35,6 @@ template <HingeScalar Scalar>
 MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
                                  const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
                                  unsigned request = want_all);
-
-// The 12 coordinates of hinge h, in the order x0, x1, x2, x3.
-std::array<double, 12> hinge_coordinates(const Mesh& mesh, const Hinge& h);
 
 #define HINGE_REFERENCE_ASSEMBLE_EXTERN(S)                                                                  \
   extern template std::vector<HingeCoefficients<S>> rest_state<S>(const Mesh&, const Topology&,             \

@@ -6,42 +6,18 @@
 
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate_impl.hpp"
+#include "hinge/reference/hinge_checks.hpp"
 
 namespace hinge::reference {
-
-namespace detail {
-
-// "hinge 7 (edge 3-9, faces 2 and 5; OBJ numbering: vertices 4-10, faces 3 and 6): "
-std::string describe_hinge(const Topology& topology, Index hinge);
-
-// Runs f(); rethrows InputError / DomainError with the hinge named in front of the message.
-template <class F>
-auto for_hinge(const Topology& topology, Index hinge, F&& f) {
-  try {
-    return f();
-  } catch (const InputError& e) {
-    throw InputError(describe_hinge(topology, hinge) + e.what());
-  } catch (const DomainError& e) {
-    throw DomainError(describe_hinge(topology, hinge) + e.what());
-  }
-}
-
-inline void check_same_faces(const Mesh& mesh, const Topology& topology, const char* what) {
-  if (mesh.vertices.size() != topology.vertex_count || mesh.faces != topology.faces)
-    throw InputError(std::string("the ") + what +
-                     " mesh must have the same vertices (count) and faces as the deformed mesh");
-}
-
-}  // namespace detail
 
 template <HingeScalar Scalar>
 std::vector<HingeCoefficients<Scalar>> rest_state(const Mesh& rest, const Topology& topology,
                                                   const EnergyParameters& parameters) {
-  detail::check_same_faces(rest, topology, "rest");
+  check_same_mesh(rest, topology, "rest");
   std::vector<HingeCoefficients<Scalar>> coefficients;
   coefficients.reserve(topology.hinges.size());
   for (Index i = 0; i < static_cast<Index>(topology.hinges.size()); ++i) {
-    coefficients.push_back(detail::for_hinge(topology, i, [&] {  // Algorithm 1, lines 2-4
+    coefficients.push_back(for_hinge(topology, i, [&] {  // Algorithm 1, lines 2-4
       const PreparedHinge<Scalar> p = prepare_hinge<Scalar>(hinge_coordinates(rest, topology.hinges[i]));
       HingeCoefficients<Scalar> c = rest_coefficients(parameters.model, p.stencil, bend_angle(p.stencil, p.sign),
                                                       from_double<Scalar>(parameters.k));
@@ -55,12 +31,12 @@ std::vector<HingeCoefficients<Scalar>> rest_state(const Mesh& rest, const Topolo
 template <HingeScalar Scalar>
 void set_previous_state(std::vector<HingeCoefficients<Scalar>>& coefficients, const Mesh& previous,
                         const Topology& topology) {
-  detail::check_same_faces(previous, topology, "previous");
+  check_same_mesh(previous, topology, "previous");
   for (Index i = 0; i < static_cast<Index>(topology.hinges.size()); ++i) {
-    detail::for_hinge(topology, i, [&] {
+    for_hinge(topology, i, [&] {
       const PreparedHinge<Scalar> p = prepare_hinge<Scalar>(hinge_coordinates(previous, topology.hinges[i]));
       const BendAngle<Scalar> b = bend_angle(p.stencil, p.sign);
-      if (b.on_branch_cut) throw DomainError("the previous state is folded flat (theta_hat = pi)");
+      if (b.on_branch_cut) throw_folded_previous();
       coefficients[i].phi_hat = 2 * b.tan_half_theta;
     });
   }
@@ -70,7 +46,7 @@ template <HingeScalar Scalar>
 MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
                                  const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
                                  unsigned request) {
-  detail::check_same_faces(deformed, topology, "deformed");
+  check_same_mesh(deformed, topology, "deformed");
   if (coefficients.size() != topology.hinges.size())
     throw std::invalid_argument("assemble: one HingeCoefficients per hinge expected");
   const Eigen::Index n = 3 * static_cast<Eigen::Index>(topology.vertex_count);
@@ -82,7 +58,7 @@ MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
 
   for (Index i = 0; i < static_cast<Index>(topology.hinges.size()); ++i) {
     const Hinge& hinge = topology.hinges[i];
-    detail::for_hinge(topology, i, [&] {
+    for_hinge(topology, i, [&] {
       const ThetaDerivatives<Scalar> d =
           theta_derivatives<Scalar>(hinge_coordinates(deformed, hinge), want_hess);
       const Psi<Scalar> p = psi(model, coefficients[i], d.angle);

@@ -10,6 +10,7 @@
 // Sign: theta has the sign of (n x n~) . e0: lifting x0 along +n makes theta negative.
 #pragma once
 
+#include "hinge/reference/energy.hpp"  // BendAngle
 #include "hinge/reference/stencil.hpp"
 
 namespace hinge::reference {
@@ -17,13 +18,6 @@ namespace hinge::reference {
 // The sign of (N x Nt) . e0 when it is known exactly (from hinge::hinge_orientation_exact on the input
 // doubles), or `computed` to take the sign of the value computed in Scalar.
 enum class ExactSign { negative = -1, zero = 0, positive = 1, computed = 2 };
-
-template <class Scalar>
-struct BendAngle {
-  Scalar theta;           // in (-pi, pi]
-  Scalar tan_half_theta;  // eq. (12); infinite on the branch cut theta = pi
-  bool on_branch_cut;     // the hinge is folded flat onto itself: theta = +pi exactly
-};
 
 // atan2 form (CONVENTIONS.md). On the branch cut (numerator exactly zero, denominator negative) the
 // result is +pi, never -pi: a zero numerator is taken as +0.

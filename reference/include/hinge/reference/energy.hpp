@@ -1,6 +1,9 @@
-// hinge/reference/energy.hpp: bending energies psi(theta) with psi' and psi'' (section 2, eq. 8 and
-// section 5), the rest-state preprocessing (Algorithm 1, eq. 11), and the chain rule (eqs. 2-3).
-// Every model and parameter is documented in docs/quantities.md.
+// hinge/reference/energy.hpp: the bending energies as functions of the bend angle alone: psi(theta) with
+// psi' and psi'' per model (section 2, eq. (8) and section 5), their per-hinge constants (Algorithm 1's
+// output, eq. (11)), and the messages of the energies' own errors. No geometry: every evaluator (the
+// reference, hinge::fast, the oracle) computes the angle its own way and hands it here. Every model and
+// parameter is documented in docs/quantities.md; one hinge's energy gradient and Hessian (eqs. (2)-(3))
+// are in hinge_energy.hpp.
 //
 //   shells        psi = k a (theta - theta_bar)^2                                  Discrete Shells
 //   tan           psi = k a (phi(theta) - phi(theta_bar))^2,  phi = 2 tan(theta/2)  eq. (8)
@@ -11,16 +14,15 @@
 //   viscoelastic  psi = k a (phi - phi(theta_bar))^2 + (k_d / dt) a (phi - phi(theta_hat))^2 (section 5)
 //
 // a = 3 |e_bar|^2 / A_bar (A_bar: the rest areas of the two triangles, summed); k given, or from
-// eq. (11). phi and its derivatives are polynomials in t = tan(theta/2) (eq. 12):
+// eq. (11). phi and its derivatives are polynomials in t = tan(theta/2) (eq. (12)):
 // phi = 2t, phi' = 1 + t^2, phi'' = t (1 + t^2).
 #pragma once
 
 #include <string>
 #include <string_view>
 
-#include "hinge/reference/bend_angle.hpp"
 #include "hinge/reference/errors.hpp"
-#include "hinge/reference/hessian.hpp"
+#include "hinge/reference/scalar.hpp"
 
 namespace hinge::reference {
 
@@ -31,6 +33,30 @@ std::string_view model_name(Model model);
 Model parse_model(std::string_view name);
 // Whether psi is infinite at theta = +-pi (then the branch cut is an error for that hinge).
 constexpr bool infinite_at_pi(Model model) { return model == Model::tan || model == Model::viscoelastic; }
+
+// The energy's parameters for a whole mesh (Algorithm 1's inputs besides the rest shape).
+struct EnergyParameters {
+  Model model = Model::tan;
+  double k = 1;            // bending stiffness (or bending_stiffness(Y, nu, h), eq. (11))
+  double k_d_over_dt = 0;  // viscoelastic only: k_d / dt
+};
+
+// The bend angle as the energies take it (computed by bend_angle.hpp in the reference, by the fast kernels
+// and by the oracle each its own way).
+template <class Scalar>
+struct BendAngle {
+  Scalar theta;           // in (-pi, pi]
+  Scalar tan_half_theta;  // eq. (12); infinite on the branch cut theta = pi
+  bool on_branch_cut;     // the hinge is folded flat onto itself: theta = +pi exactly
+};
+
+// The energies' errors, with their messages (hinge::DomainError):
+//   "the tan energy is infinite at theta = +-pi (hinge folded flat onto itself)"
+//   "rest hinge is folded flat (theta_bar = pi): the tan energy needs theta_bar in (-pi, pi) (eq. (10))"
+//   "the previous state is folded flat (theta_hat = pi)"
+[[noreturn]] void throw_infinite_energy(Model model);
+[[noreturn]] void throw_folded_rest(Model model);
+[[noreturn]] void throw_folded_previous();
 
 // The per-hinge constants of Algorithm 1.
 template <class Scalar>
@@ -47,24 +73,6 @@ struct HingeCoefficients {
 template <class Scalar>
 Scalar bending_stiffness(const Scalar& Y, const Scalar& nu, const Scalar& h) {
   return Y * h * h * h / (24 * (1 - nu * nu));
-}
-
-// Algorithm 1 for one hinge: a from the rest stencil, theta_bar and phi_bar from its bend angle.
-// Throws DomainError if `model` is infinite at pi and the rest hinge is folded (eq. 10).
-template <class Scalar>
-HingeCoefficients<Scalar> rest_coefficients(Model model, const Stencil<Scalar>& rest, const BendAngle<Scalar>& rest_angle,
-                                            const Scalar& k) {
-  if (infinite_at_pi(model) && rest_angle.on_branch_cut)
-    throw DomainError("rest hinge is folded flat (theta_bar = pi): the " + std::string(model_name(model)) +
-                      " energy needs theta_bar in (-pi, pi) (eq. 10)");
-  HingeCoefficients<Scalar> c;
-  c.k = k;
-  const Scalar l0 = rest.upper.l[0];
-  c.a = 6 * l0 * l0 / (rest.upper.double_area + rest.lower.double_area);  // 3 |e|^2 / A_bar, A = 2A / 2
-  c.theta_bar = rest_angle.theta;
-  c.phi_bar = 2 * rest_angle.tan_half_theta;  // Algorithm 1, line 2 (eq. 12)
-  c.phi_hat = c.phi_bar;
-  return c;
 }
 
 template <class Scalar>
@@ -88,9 +96,7 @@ Psi<Scalar> psi(Model model, const HingeCoefficients<Scalar>& c, const BendAngle
     case Model::viscoelastic: {
       const Scalar& t = b.tan_half_theta;
       using std::isfinite;
-      if (b.on_branch_cut || !isfinite(t))
-        throw DomainError("the " + std::string(model_name(model)) +
-                          " energy is infinite at theta = +-pi (hinge folded flat onto itself)");
+      if (b.on_branch_cut || !isfinite(t)) throw_infinite_energy(model);
       const Scalar phi = 2 * t, dphi = 1 + t * t, d2phi = t * (1 + t * t);  // eq. (8), phi = 2 tan(theta/2)
       const Scalar elastic = phi - c.phi_bar;
       Scalar value = c.k * c.a * elastic * elastic;
@@ -114,16 +120,6 @@ Psi<Scalar> psi(Model model, const HingeCoefficients<Scalar>& c, const BendAngle
     }
   }
   throw std::invalid_argument("unknown energy model");
-}
-
-// Eqs. (2)-(3): grad psi = psi' grad theta; Hess psi = psi' Hess theta + psi'' grad theta grad theta^T.
-template <class Scalar>
-Vec12<Scalar> energy_gradient(const Psi<Scalar>& p, const Vec12<Scalar>& grad_theta) {
-  return p.d1 * grad_theta;  // eq. (2)
-}
-template <class Scalar>
-Mat12<Scalar> energy_hessian(const Psi<Scalar>& p, const Vec12<Scalar>& grad_theta, const Mat12<Scalar>& hess_theta) {
-  return p.d1 * hess_theta + p.d2 * grad_theta * grad_theta.transpose();  // eq. (3)
 }
 
 }  // namespace hinge::reference

@@ -21,4 +21,8 @@ class DomainError : public std::domain_error {
   using std::domain_error::domain_error;
 };
 
+// DomainError "<what> is outside the range of double" (what: "theta", "the gradient", "the Hessian", "the
+// energy"): an exact result, or one computed in a wider type, that no finite double can hold.
+[[noreturn]] void throw_outside_double(const std::string& what);
+
 }  // namespace hinge

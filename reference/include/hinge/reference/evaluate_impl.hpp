@@ -6,27 +6,17 @@
 
 #include "hinge/reference/errors.hpp"
 #include "hinge/reference/evaluate.hpp"
+#include "hinge/reference/hinge_checks.hpp"
 #include "hinge/reference/predicates.hpp"
 
 namespace hinge::reference {
 
-namespace detail {
-inline Point point(const std::array<double, 12>& x, int v) { return {x[3 * v], x[3 * v + 1], x[3 * v + 2]}; }
-}  // namespace detail
-
 template <HingeScalar Scalar>
 PreparedHinge<Scalar> prepare_hinge(const std::array<double, 12>& x) {
-  static const char* const names[12] = {"x0.x", "x0.y", "x0.z", "x1.x", "x1.y", "x1.z",
-                                        "x2.x", "x2.y", "x2.z", "x3.x", "x3.y", "x3.z"};
-  for (int i = 0; i < 12; ++i)
-    if (!std::isfinite(x[i])) throw InputError(std::string("coordinate ") + names[i] + " is not finite");
-  const Point x0 = detail::point(x, 0), x1 = detail::point(x, 1), x2 = detail::point(x, 2), x3 = detail::point(x, 3);
-  if (x1 == x2) throw InputError("degenerate hinge: the hinge edge has zero length (x1 == x2)");
-  if (zero_area_exact(x0, x1, x2)) throw InputError("degenerate hinge: the upper triangle (x0, x1, x2) has zero area");
-  if (zero_area_exact(x3, x2, x1)) throw InputError("degenerate hinge: the lower triangle (x3, x2, x1) has zero area");
-
+  check_hinge(x);  // CONVENTIONS.md: non-finite, zero-length hinge edge, zero-area triangle (exactly)
   PreparedHinge<Scalar> p;
-  p.sign = static_cast<ExactSign>(hinge_orientation_exact(x0, x1, x2, x3));
+  p.sign = static_cast<ExactSign>(hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]},
+                                                          {x[9], x[10], x[11]}));
   if constexpr (std::is_floating_point_v<Scalar>) {
     // Power-of-two scaling (see evaluate.hpp). Differences are taken in long double (exact when the two
     // exponents are within 11 binades; no overflow), then scaled exactly.

@@ -58,6 +58,9 @@ struct Topology {
 // that use the same directed edge (inconsistent orientation).
 Topology build_topology(const Mesh& mesh);
 
+// The 12 coordinates of hinge h, in the order x0, x1, x2, x3.
+std::array<double, 12> hinge_coordinates(const Mesh& mesh, const Hinge& h);
+
 // Throws hinge::InputError naming the first face whose three vertices have exactly zero area (collinear
 // or coincident), judged exactly on the doubles of `mesh` (CONVENTIONS.md).
 void check_faces_nondegenerate(const Mesh& mesh);

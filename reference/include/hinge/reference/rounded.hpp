@@ -11,21 +11,16 @@
 
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/errors.hpp"
+#include "hinge/reference/results.hpp"
 #include "hinge/reference/scalar.hpp"
 
 namespace hinge::reference {
-
-struct RoundedTheta {
-  double theta = 0;
-  std::array<double, 12> grad{};
-  std::array<double, 144> hess{};  // row-major
-};
 
 // `value` rounded to the nearest double; DomainError ("<what> is outside the range of double") when
 // that is not finite.
 double rounded_to_double(const auto& value, const char* what) {
   const double d = to_double(value);
-  if (!std::isfinite(d)) throw DomainError(std::string(what) + " is outside the range of double");
+  if (!std::isfinite(d)) throw_outside_double(what);
   return d;
 }
 
@@ -43,12 +38,6 @@ RoundedTheta round_theta(const Scalar& theta, const Grad& grad, const Hess& hess
 // theta, grad theta, Hess theta of the hinge `x` in `type`, rounded to double. Throws InputError
 // (degenerate or non-finite input) or DomainError (a result outside the range of double).
 RoundedTheta theta_derivatives_rounded(const ScalarType& type, const std::array<double, 12>& x);
-
-struct RoundedMesh {
-  double energy = 0;
-  std::vector<double> gradient;         // empty unless requested
-  Eigen::SparseMatrix<double> hessian;  // upper triangle; empty unless requested
-};
 
 // rest_state + assemble in `type`, rounded to double. Throws as they do, and DomainError for a result
 // outside the range of double.

@@ -80,9 +80,8 @@ inline void exact_product(long double a, long double b, long double& p, long dou
 // by Sterbenz's lemma); plainly in the multiprecision types. The components of a cross product are
 // such differences and cancel in needle and obtuse triangles; this keeps N to a few units where the
 // stencil is computed in long double (the double reference's stencil) or double (the float
-// reference's). Without it a needle's N carried a
-// relative error ~kappa_shape 2^-64 that the cancellation of N0 + N~0 on near-flat hinges amplified to
-// no correct digit (docs/testing.md, Findings 1).
+// reference's). Plain products would give a needle's N a relative error ~kappa_shape 2^-64, which the
+// cancellation of N0 + N~0 on near-flat hinges amplifies to no correct digit (docs/testing.md, Findings 1).
 template <class Scalar>
 Scalar difference_of_products(const Scalar& a, const Scalar& b, const Scalar& c, const Scalar& d) {
   if constexpr (std::same_as<Scalar, float> || std::same_as<Scalar, double>) {
@@ -153,8 +152,8 @@ Stencil<Scalar> make_stencil(const HingeEdges<Scalar>& x) {
   Stencil<Scalar> s;
   // (x1 - x0) x (x2 - x0) = (x1 - x0) x (x2 - x1) and (x2 - x3) x (x1 - x3) = (x2 - x1) x (x1 - x3): formed
   // with the hinge edge, N and Nt stay perpendicular to it to working precision even when it is much
-  // shorter than the other edges (the two long edges' product loses log2(L / |e0|) bits; hinge conform's
-  // short-hinge-edges category measured 2.5e12 units of 2^-53 in theta at |e0| = 2^-60 L).
+  // shorter than the other edges (the two long edges' product would lose log2(L / |e0|) bits: 2.5e12 units
+  // of 2^-53 in theta at |e0| = 2^-60 L, hinge conform's short-hinge-edges category).
   s.N = cross<Scalar>(x.e2, x.e0);    // (x1 - x0) x (x2 - x0)
   s.Nt = cross<Scalar>(x.e0, x.et2);  // (x2 - x3) x (x1 - x3)
   s.upper = make_triangle<Scalar>(x.e0, x.e1, x.e2, s.N, true);

@@ -1,0 +1,53 @@
+// hinge/io/jsonl.hpp: the JSON Lines format of `hinge eval` and `hinge oracle` (CONVENTIONS.md).
+// Input: {"id": "any string", "x": [12 numbers]} per line; other fields ignored; blank lines skipped.
+// Output: {"id", "theta", "grad", "hess"}, or {"id", "error"} for a hinge that cannot be evaluated, or
+// {"id": null-or-id, "line": N, "error"} for a line that is not valid input.
+#pragma once
+
+#include <array>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "hinge/reference/results.hpp"
+
+namespace hinge::io {
+
+struct HingeLine {
+  long line = 0;             // 1-based line number in the input
+  std::string id_json;       // the id as JSON text ("null" if it could not be read)
+  std::optional<std::array<double, 12>> x;  // absent when the line is not valid input
+  std::string error;         // why the line is not valid input
+};
+
+// Parses one non-blank input line. Numbers are read correctly rounded (nlohmann::json uses strtod).
+HingeLine parse_hinge_line(const std::string& text, long line_number);
+
+// One output line (without the newline).
+std::string result_line(const std::string& id_json, const reference::RoundedTheta& r);
+std::string error_line(const std::string& id_json, const std::string& error);
+std::string invalid_line(const HingeLine& line);
+
+// Calls f(HingeLine) for every non-blank line of `in`.
+template <class F>
+void for_each_hinge_line(std::istream& in, F&& f);
+
+// `s` as a JSON string, quotes and escapes included (invalid UTF-8 replaced).
+std::string json_string(const std::string& s);
+
+// Whether a line holds only whitespace.
+bool blank(const std::string& text);
+
+}  // namespace hinge::io
+
+#include <istream>
+
+template <class F>
+void hinge::io::for_each_hinge_line(std::istream& in, F&& f) {
+  std::string text;
+  long number = 0;
+  while (std::getline(in, text)) {
+    ++number;
+    if (!blank(text)) f(parse_hinge_line(text, number));
+  }
+}

@@ -1,0 +1,49 @@
+// hinge/methods/methods.hpp: the evaluation methods by name (CONVENTIONS.md: `hinge eval --method`,
+// `hinge hessian --method`, the study's rows, the Python module), each in a scalar type chosen at run
+// time (hinge/reference/scalar.hpp), every output rounded to double. A name is parsed once into a Method;
+// the calls below switch on it and go straight to the library that implements it.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hinge/reference/energy.hpp"
+#include "hinge/reference/mesh.hpp"
+#include "hinge/reference/results.hpp"
+#include "hinge/reference/scalar.hpp"
+
+namespace hinge::methods {
+
+enum class Method {
+  reference,  // hinge::reference: eqs. (4)-(6) transcribed (mesh: hinge by hinge)
+  fast,       // hinge::fast: the lean per-hinge kernel (mesh: Algorithm 2)
+};
+
+// "reference", "fast".
+std::string_view method_name(Method method);
+// The names, in the order above.
+std::vector<std::string> method_names();
+// Throws std::invalid_argument "unknown method 'X': expected one of reference, fast".
+Method parse_method(std::string_view name);
+
+// theta, grad theta, Hess theta of the hinge x (x0.x, ..., x3.z) by `method` in `scalar`, rounded to double.
+// Throws hinge::InputError (degenerate or non-finite input) or hinge::DomainError (a result outside the range
+// of double).
+reference::RoundedTheta evaluate_hinge(Method method, const ScalarType& scalar, const std::array<double, 12>& x);
+
+// A whole mesh: what `request` asks (reference::want_energy | want_gradient | want_hessian).
+struct MeshInput {
+  const Mesh* deformed = nullptr;
+  const Mesh* rest = nullptr;  // same faces and vertex count (Algorithm 1's rest state)
+  const Topology* topology = nullptr;
+  reference::EnergyParameters parameters;
+  unsigned request = reference::want_all;
+  int threads = 1;  // hinge::fast only; never changes an output bit
+};
+// Algorithm 1 on the rest mesh, then the energy, gradient and Hessian of the deformed one, rounded to
+// double. Throws as evaluate_hinge, naming the hinge.
+reference::RoundedMesh evaluate_mesh(Method method, const ScalarType& scalar, const MeshInput& input);
+
+}  // namespace hinge::methods
