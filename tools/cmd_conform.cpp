@@ -1,4 +1,4 @@
-// hinge conform: check another implementation against certified values (CONVENTIONS.md; docs/conformance.md).
+// hinge conform: check another implementation against certified values (docs/contract.md; docs/conformance.md).
 //   hinge conform --inputs [--output FILE]                       the conformance inputs {"id", "category", "x"}
 //   hinge conform --candidate FILE                               outputs in the hinge eval format, same ids
 //   hinge conform --plugin LIB.so [--symbol NAME] [--save FILE]  a C function (hinge/candidate.h)

@@ -1,4 +1,4 @@
-// hinge eval [--method M] [--scalar S] [--input FILE] [--output FILE] (CONVENTIONS.md).
+// hinge eval [--method M] [--scalar S] [--input FILE] [--output FILE] (docs/contract.md).
 #include "commands.hpp"
 #include "hinge/io/jsonl.hpp"
 #include "hinge/methods/methods.hpp"

@@ -1,5 +1,5 @@
 // tools/commands.hpp: the subcommands of `hinge`. Each file cmd_*.cpp parses its options and calls the
-// libraries; no numerics live in tools/. Exit statuses (CONVENTIONS.md): 0 done, 1 invalid input or
+// libraries; no numerics live in tools/. Exit statuses (docs/contract.md): 0 done, 1 invalid input or
 // I/O failure, 2 usage error.
 #pragma once
 

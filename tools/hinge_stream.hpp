@@ -1,5 +1,5 @@
 // tools/hinge_stream.hpp: the JSON Lines loop shared by `hinge eval` and `hinge oracle`: read hinges, write
-// one result line per input line, in order (CONVENTIONS.md).
+// one result line per input line, in order (docs/contract.md).
 #pragma once
 
 #include <array>

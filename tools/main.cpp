@@ -1,4 +1,4 @@
-// hinge: the command-line tool (CONVENTIONS.md). `hinge --help` lists the subcommands.
+// hinge: the command-line tool (docs/contract.md). `hinge --help` lists the subcommands.
 #include <iostream>
 
 #include "commands.hpp"

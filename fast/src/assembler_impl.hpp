@@ -181,7 +181,7 @@ std::vector<HingeCoefficients<Scalar>> Workspace<Scalar>::rest_state(const Mesh&
     c.k = k;
     c.a = 6 * vdot(e0, e0) / (Scalar(1) / face_[hg.upper][3] + Scalar(1) / face_[hg.lower][3]);  // 3 |e|^2 / A_bar
     c.theta_bar = b.theta;
-    c.phi_bar = 2 * b.tan_half_theta;  // Algorithm 1, line 2 (eq. 12)
+    c.phi_bar = 2 * b.tan_half_theta;  // Algorithm 1, line 2 (eq. (12))
     c.phi_hat = c.phi_bar;
     c.k_d_over_dt = kd;
     return Scalar(0);

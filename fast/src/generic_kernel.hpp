@@ -231,7 +231,7 @@ inline int orientation(const std::array<double, 12>& x, const double p[3], const
 // --- eqs. (4)-(6) from the two summaries -----------------------------------------------------------
 
 // Writes the Hessian of theta (12 x 12, column-major: `hess` points to its 144 entries) from the upper
-// and lower summaries, column by column of each 3 x 3 block (columns.hpp). With M_j = n q_j^T (eq. 5's
+// and lower summaries, column by column of each 3 x 3 block (columns.hpp). With M_j = n q_j^T (eq. (5)'s
 // omega_0j M_j = a_0 M_j), the blocks of one half-hinge are
 //   -S(Q_0) = -a_0 (M_0 + M_0^T),  P_10 - Q_1 = a_1 M_0^T - a_0 M_1,  P_20 - Q_2 = a_2 M_0^T - a_0 M_2,
 //   S(P_11) = a_1 (M_1 + M_1^T),  S(P_22) = a_2 (M_2 + M_2^T),  P_12 + P_21^T = a_1 M_2^T + a_2 M_1,
@@ -442,7 +442,7 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   for (int k = 0; k < 3; ++k) U.n[k] = -U.n[k];  // n~ = -C~ / |C~|: the lower labels run clockwise
   check_areas(x);  // exactly (hinge_checks.hpp)
 
-  // theta = sgn 2 atan2(|n - n~|, |n + n~|) (Fig. 3 and eq. 12), the sign decided exactly; with n~ the
+  // theta = sgn 2 atan2(|n - n~|, |n + n~|) (Fig. 3 and eq. (12)), the sign decided exactly; with n~ the
   // negated lane 1, n - n~ and n + n~ are the sum and difference of the two lanes.
   // The filter takes fl(x2 - x1), fl(x0 - x1), fl(x3 - x1): the high parts of the unscaled edges in
   // double-double and float's lanes, else rounded once from the doubles (a difference rounded to a wider

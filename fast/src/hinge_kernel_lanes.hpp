@@ -15,9 +15,9 @@
 // r_0) is computed in double-double (exact.hpp) and rounded to double once; eqs. (4) and (6) follow in
 // double.
 //
-// Eq. (6) in lanes. With c = (-a_0, a_1, a_2) (eq. 4 reads grad_{x_I} theta = c_I n on each triangle),
+// Eq. (6) in lanes. With c = (-a_0, a_1, a_2) (eq. (4) reads grad_{x_I} theta = c_I n on each triangle),
 // the upper triangle's part of block (I, J), column c, is
-//   c_I (q_J n[c]) + c_J (n q_I[c])                                                       (eq. 6)
+//   c_I (q_J n[c]) + c_J (n q_I[c])                                                       (eq. (6))
 // (H00 = -S(Q_0), H10 = P_10 - Q_1, H11 = S(P_11) ..., proofs/hessian.md), and the lower triangle's is
 // the same in its labels (x3, x1, x2); blocks (1, 1), (1, 2), (2, 1), (2, 2) add both triangles and
 // -+ the symmetric part of N_0 + N~_0. One vector holds the upper triangle's block column in half 0 and
@@ -103,7 +103,7 @@ HINGE_FAST_INLINE void store_gradient(const L g[3], double* grad) {
 // four doubles of the column).
 template <class L>
 HINGE_FAST_INLINE void lanes_hessian(const L n[3], const L nv, const L q[3], const L a, const L rv, double* hess) {
-  const L c = a * L::make(-1, 1, 1, 0, -1, 1, 1, 0);  // c_I
+  const L c = a * L::make(-1, 1, 1, 0, -1, 1, 1, 0);  // eq. (4): grad_{x_I} theta = c_I n on each triangle
   const L cb[3] = {spread<0>(c), spread<1>(c), spread<2>(c)};
   // The vectors q_J with their components in lanes 0 .. 2 of each half (lane 3: don't care).
   const L qv[3] = {lanes_of<0>(q[0], q[1], q[2]), lanes_of<1>(q[0], q[1], q[2]), lanes_of<2>(q[0], q[1], q[2])};
@@ -118,12 +118,12 @@ HINGE_FAST_INLINE void lanes_hessian(const L n[3], const L nv, const L q[3], con
   HINGE_FAST_UNROLL
   for (int k = 0; k < 3; ++k) {
     const L nq[3] = {nv * spread<0>(q[k]), nv * spread<1>(q[k]), nv * spread<2>(q[k])};  // n q_I[k]
-    auto block = [&](int I, int J) { return cb[I] * (qv[J] * n[k]) + cb[J] * nq[I]; };  // upper | lower
-    // Column k of x0 (H00, H10, H20, 0) and of x3 (0, H13, H23, H33: the lower triangle's H10, H20, H00).
+    auto block = [&](int I, int J) { return cb[I] * (qv[J] * n[k]) + cb[J] * nq[I]; };  // eq. (6): upper | lower
+    // eq. (6): column k of x0 (H00, H10, H20, 0) and of x3 (0, H13, H23, H33: the lower triangle's H10, H20, H00).
     const L b00 = block(0, 0), b10 = block(1, 0), b20 = block(2, 0);
     store_column(hess + 12 * k, b00.lo4(), b10.lo4(), b20.lo4(), zero);
     store_column(hess + 12 * (9 + k), zero, b10.hi4(), b20.hi4(), b00.hi4());
-    // Columns k of x1 and x2: H0J, both triangles' H1J and H2J with -+ the symmetric part of N_0 + N~_0,
+    // eq. (6): columns k of x1 and x2: H0J, both triangles' H1J and H2J with -+ the symmetric part of N_0 + N~_0,
     // the lower triangle's H0J as H3J.
     const L x1 = nv * rb[k], x2 = rv * n[k];  // n r_0[k], r_0 n[k]
     const L sym = ((x1 + swap_halves(x1)) + (x2 + swap_halves(x2))) * 0.5;
@@ -196,7 +196,7 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   for (int h = 0; h < B; ++h)
     if (x[h][3] == x[h][6] && x[h][4] == x[h][7] && x[h][5] == x[h][8] && rare(h, LanesOutcome::zero_hinge_edge)) return;
 
-  // The edges, exactly (two_diff): upper f0, f1, f2, f0 | lower f0, f1, f2, f0.
+  // Fig. 1: the edges e_i, exactly (two_diff): upper f0, f1, f2, f0 | lower f0, f1, f2, f0.
   auto edges = [](const double* const* y, V& F) {
     F[0] = two_diff(pick12_of<L, W, 6, 0, 3, 6, 6, 9, 3, 6>(y), pick12_of<L, W, 3, 6, 0, 3, 3, 6, 9, 3>(y));
     F[1] = two_diff(pick12_of<L, W, 7, 1, 4, 7, 7, 10, 4, 7>(y), pick12_of<L, W, 4, 7, 1, 4, 4, 7, 10, 4>(y));
@@ -232,16 +232,16 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   // (lane 3: don't care): f0 and f2 rotated (for cross products), C = f2 x f0, the normals.
   const D f0_yzx = lanes_of<0>(F[1], F[2], F[0]), f0_zxy = lanes_of<0>(F[2], F[0], F[1]);
   const D f2_yzx = lanes_of<2>(F[1], F[2], F[0]), f2_zxy = lanes_of<2>(F[2], F[0], F[1]);
-  const D Cv = difference_of_products(f2_yzx, f0_zxy, f2_zxy, f0_yzx);  // f2 x f0: 2A n | -2A~ n~
+  const D Cv = difference_of_products(f2_yzx, f0_zxy, f2_zxy, f0_yzx);  // eq. (4)'s n: f2 x f0 = 2A n | -2A~ n~
   const V C{spread_dd<0>(Cv), spread_dd<1>(Cv), spread_dd<2>(Cv)};     // the same, component c in every lane
-  const V X = cross(F, C);                                              // lane j: (2A)^2 q_j
+  const V X = cross(F, C);                                              // eq. (5): lane j (2A)^2 q_j, q_j = m_j / h_j
   V Dl, Dr;  // lanes (C, f0, f2, f0) . (C, f0, f0, f1)
   HINGE_FAST_UNROLL
   for (int c = 0; c < 3; ++c) {
     Dl[c] = blend_dd<0, 1, 1, 1>(C[c], permute_dd<0, 0, 2, 0>(F[c]));
     Dr[c] = blend_dd<0, 1, 1, 1>(C[c], permute_dd<0, 0, 0, 1>(F[c]));
   }
-  const D dots = dot(Dl, Dr);  // S, L0, D1, D2
+  const D dots = dot(Dl, Dr);  // eqs. (4)-(5): S = (2A)^2, L0 = l_0^2, D1, D2 (the cosines' numerators)
   // When this fails, the results are replaced by wide_range_kernel's (hinge_kernel.hpp, in_range():
   // (2A)^2 >= 2^-140 M^4 in both triangles and l_0^2 >= 2^-500 M^2).
   each([&](auto h) {
@@ -263,7 +263,7 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   const W half_e = rsqrt_correction(D{blend<0, 0, 1, 1>(dots.hi, one), blend<0, 0, 1, 1>(dots.lo, nothing)}, y);  // e/2
   const D yy = two_prod(permute<0, 0, 1, 1>(y), permute<0, 1, 1, 1>(y));  // y_S^2, y_S y_L, y_L^2
   const W ee = permute<0, 0, 1, 1>(half_e) + permute<0, 1, 1, 1>(half_e);   // e_S, (e_S + e_L)/2, e_L
-  const D G{yy.hi, yy.lo + yy.hi * ee};                                        // 1/(2A)^2, K, 1/l_0^2
+  const D G{yy.hi, yy.lo + yy.hi * ee};  // eq. (5)'s omega_ij factors: 1/(2A)^2, K = 1/(l_0 2A), 1/l_0^2
   const D invS = spread_dd<0>(G), K = spread_dd<1>(G), RL = spread_dd<2>(G);
 
   const W lower_negated = W::make(1, 1, 1, 1, -1, -1, -1, -1);
@@ -272,10 +272,10 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   const W n[3] = {spread<0>(nv), spread<1>(nv), spread<2>(nv)};
   W q[3];
   HINGE_FAST_UNROLL
-  for (int c = 0; c < 3; ++c) q[c] = round_product(X[c], invS);  // lane j: q_j = m_j / h_j
-  // r_0 = m_0 / l_0^2, with m_0 = X_0 K (never 1 / (l_0^3 2A), which can overflow)
+  for (int c = 0; c < 3; ++c) q[c] = round_product(X[c], invS);  // eq. (5): lane j q_j = m_j / h_j
+  // eq. (5): N_0 = n r_0^T, r_0 = m_0 / l_0^2, with m_0 = X_0 K (never 1 / (l_0^3 2A), which can overflow)
   const W rv = round_product(lanes_of<0>(X[0], X[1], X[2]) * K, RL);
-  // a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 . e_0) / (l_0 2A)
+  // eq. (4): a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 . e_0) / (l_0 2A)
   const W a = round_product(permute_dd<1, 3, 2, 3>(dots), K) * W::make(1, -1, -1, 0, 1, -1, -1, 0);
 
   // Validity: each triangle's area is certainly nonzero when some component k of C passes the area
@@ -318,7 +318,7 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
       o[h].sign = decided ? positive - negative : kUndecided;
     });
   }
-  // theta = sgn 2 atan2(|n - n~|, |n + n~|) (Fig. 3 and eq. 12): nw's halves are n and -n~ in
+  // theta = sgn 2 atan2(|n - n~|, |n + n~|) (Fig. 3 and eq. (12)): nw's halves are n and -n~ in
   // double-double, so their sum is n - n~ (half 0) and their difference -(n + n~) (half 1). Their squared
   // lengths are summed in double-double and rounded once; the atan2 is the caller's (libm), tan(theta/2) =
   // |n - n~| / |n + n~| the square root of their quotient.

@@ -1,6 +1,6 @@
 // fast/src/triangle_kernel.hpp: one triangle of Algorithm 2 (lines 8-19): its geometry, the local
 // triangle Hessian H^D of eq. (7) with the conditional transpose, and the per-edge terms of the hinges it
-// owns (grad theta, eq. 4; the force, eq. 2; psi'' grad theta grad theta^T, section 4.2).
+// owns (grad theta, eq. (4); the force, eq. (2); psi'' grad theta grad theta^T, section 4.2).
 //
 //                 x_0                 a face (x_0, x_1, x_2) in the mesh's counter-clockwise order
 //          e_1   /   \   e_2          e_i = x_{i+2} - x_{i+1}, opposite x_i, l_i = |e_i|
@@ -23,7 +23,7 @@
 // one is the EdgeOrientation of pattern.hpp: the face that owns the edge. H^D_ii itself is not
 // symmetric (R_i is not), but the mesh sum of every diagonal block is; only upper triangles are stored.
 // Errata (proofs/errata.md) used here: cos(alpha_i) = -ê_{i+1} . ê_{i+2} (Alg. 2, line 9, with cyclically
-// oriented edges), and d_i carries the cosine of the other hinge vertex (eq. 5's P_ij corrected).
+// oriented edges), and d_i carries the cosine of the other hinge vertex (eq. (5)'s P_ij corrected).
 //
 // Per owned interior edge k, with p = x_k, q = x_{k+1}, r = x_{k+2} and s the far vertex of the face T~
 // across the edge (n~, A~ its normal and area):
@@ -31,7 +31,7 @@
 //   grad_q theta = -(e_k . e_{k+1}) / (l_k 2A) n + (e_k . (r - s)) / (l_k 2A~) n~
 //   grad_r theta = -(e_k . e_{k+2}) / (l_k 2A) n + (e_k . (s - q)) / (l_k 2A~) n~
 //   grad_s theta = -(l_k / 2A~) n~                     = -n~ / h~_s
-// (the coefficients are eq. 4's cos(alpha) / h written with dot products: cos(alpha_{k+2}) / h_{k+1} =
+// (the coefficients are eq. (4)'s cos(alpha) / h written with dot products: cos(alpha_{k+2}) / h_{k+1} =
 // -(e_k . e_{k+1}) / (l_k 2A), and on T~ alike, which needs no lengths of T~.)
 //
 // Range: plain Scalar arithmetic on the vertices, with no rescaling (the mesh's usable size is bounded by
@@ -152,7 +152,7 @@ HINGE_FAST_INLINE void triangle_hessian(const TriangleGeometry<Scalar>& t, const
   }
 }
 
-// The hinge of the face's local edge k seen from the face that owns it: grad theta (eq. 4) at p, q, r,
+// The hinge of the face's local edge k seen from the face that owns it: grad theta (eq. (4)) at p, q, r,
 // s. `nt`, `inv_double_area_t`: normal and 1 / 2A~ of the face across; `xs`: its far vertex s;
 // `xq`, `xr`: the vertices q = x_{k+1}, r = x_{k+2}.
 template <class Scalar>

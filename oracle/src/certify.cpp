@@ -54,7 +54,7 @@ Angle angle(const ExactHinge& e, const Interval& l0) {
       a.tan_half = Interval::zero();
       a.exactly_zero = true;
     } else {
-      a.theta = Interval::pi();  // the branch cut: theta = +pi, never -pi (CONVENTIONS.md)
+      a.theta = Interval::pi();  // the branch cut: theta = +pi, never -pi (docs/contract.md)
       a.branch_cut = true;
     }
     return a;

@@ -117,7 +117,7 @@ P3 random_point(Random& r, double half_width) {
   return {r.uniform(-half_width, half_width), r.uniform(-half_width, half_width), r.uniform(-half_width, half_width)};
 }
 
-// Whether the exact hinge is valid and well-shaped with a margin (CONVENTIONS.md: smallest altitude
+// Whether the exact hinge is valid and well-shaped with a margin (docs/contract.md: smallest altitude
 // >= 0.15 longest edge in each triangle, 0.05 <= |theta| <= pi - 0.05; here 0.16 and 0.06, so that
 // a double evaluation of the definition agrees). The altitude test is exact in integers.
 bool well_shaped_exactly(const X12& x) {

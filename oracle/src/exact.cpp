@@ -138,7 +138,7 @@ ExactHinge exact_hinge(const ScaledHinge& x, bool with_hessian) {
   r.s = dot(e0, e0);
   const Int& s = r.s;
   r.X = dot(N, Nt);              // |N| |Nt| cos(theta)
-  r.Y = dot(cross(N, Nt), e0);   // |N| |Nt| |e0| sin(theta): the sign of theta (CONVENTIONS.md)
+  r.Y = dot(cross(N, Nt), e0);   // |N| |Nt| |e0| sin(theta): the sign of theta (docs/contract.md)
 
   // d_i = e0 . e_i: l_i cos(alpha_{3-i}) = -d_i / l0 (upper), the same with e~_i (lower).
   const Int d1 = dot(e0, e1), d2 = dot(e0, e2), dt1 = dot(e0, et1), dt2 = dot(e0, et2);
@@ -189,7 +189,7 @@ ExactHinge exact_hinge(const ScaledHinge& x, bool with_hessian) {
   K[1][2] = plus(plus(lin(-(a * d1), outer(W2, N), -(a * d2), outer(N, W1)),
                       lin(-(b * dt1), outer(Wt2, Nt), -(b * dt2), outer(Nt, Wt1))),
                  Z);
-  // H03 = 0 (eq. 6); the remaining blocks by symmetry, H_ji = H_ij^T.
+  // H03 = 0 (eq. (6)); the remaining blocks by symmetry, H_ji = H_ij^T.
   K[0][3] = M3{};
   K[3][0] = M3{};
   K[0][1] = transpose(K[1][0]);

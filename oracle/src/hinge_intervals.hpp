@@ -19,7 +19,7 @@ Interval quotient(const Int& num, const Int& den, const Interval& root, long shi
 // theta = atan2(Y / l0, X) and t = tan(theta / 2), by the half-angle forms that never cancel:
 //   X >= 0:  t = (Y / l0) / (r + X),    X < 0:  t = l0 (r - X) / Y,    r = |N| |Nt| = sqrt(nn tt),
 // theta = 2 atan(t). Exact cases: Y = 0 and X > 0 gives theta = t = 0 (point intervals); Y = 0 and
-// X < 0 is the branch cut, theta = +pi (CONVENTIONS.md) and t infinite (`branch_cut`, t left NaN).
+// X < 0 is the branch cut, theta = +pi (docs/contract.md) and t infinite (`branch_cut`, t left NaN).
 struct Angle {
   Interval theta, tan_half;
   bool branch_cut = false;

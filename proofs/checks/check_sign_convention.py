@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Check for proofs/sign-convention.md: the sign convention of theta, the atan2 form
-of CONVENTIONS.md, the identities behind it, and eq. (12).
+of docs/contract.md, the identities behind it, and eq. (12).
 
 Symbolic (SymPy, exact polynomial identities in the 12 coordinates):
   N = e0 x a, Nt = e0 x b                       (a = x0 - x1, b = x1 - x3)

@@ -3,7 +3,7 @@ lists of mpmath numbers, random hinge stencils aimed at the hard cases, and a
 pass/fail report.  Nothing here knows the paper's formulas (paper_formulas.py)
 or how theta is differentiated (theta_oracle.py).
 
-Stencil layout (CONVENTIONS.md): x = [x0.x, x0.y, x0.z, x1.x, ..., x3.z].
+Stencil layout (docs/contract.md): x = [x0.x, x0.y, x0.z, x1.x, ..., x3.z].
 
             x0
            /  \\        upper triangle T = (x0, x1, x2), counter-clockwise about n

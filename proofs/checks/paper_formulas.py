@@ -2,7 +2,7 @@
 with switches for the printed (erroneous) and corrected variants.  These are the
 CLAIMS under test; the checks compare them with theta_oracle.py.
 
-Labels (CONVENTIONS.md, and proofs/sign-convention.md):
+Labels (docs/contract.md, and proofs/sign-convention.md):
   upper T = (x0, x1, x2), counter-clockwise about n;
   lower, in the paper's tilde labels (x~0, x~1, x~2) = (x3, x1, x2), clockwise about nt.
   e_i = x_{i+2} - x_{i+1} (mod 3), l_i = |e_i|, h_i = 2A / l_i,

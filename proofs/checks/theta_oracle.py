@@ -1,5 +1,5 @@
 """Independent derivatives of the bend angle, straight from its definition in
-CONVENTIONS.md:
+docs/contract.md:
 
     theta = atan2( ((N x Nt) . e0) / |e0| ,  N . Nt ),
     N = (x1 - x0) x (x2 - x0),  Nt = (x2 - x3) x (x1 - x3),  e0 = x2 - x1.

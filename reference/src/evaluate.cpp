@@ -1,4 +1,4 @@
-// The non-template part of evaluate.hpp: the well-shaped test of CONVENTIONS.md.
+// The non-template part of evaluate.hpp: the well-shaped test of docs/contract.md.
 #include <algorithm>
 
 #include "hinge/reference/evaluate.hpp"

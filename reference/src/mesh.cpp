@@ -1,4 +1,4 @@
-// Mesh topology: edges, hinges and the checks of CONVENTIONS.md "Hinges in a mesh"
+// Mesh topology: edges, hinges and the checks of docs/contract.md "Hinges in a mesh"
 // (hinge/reference/mesh.hpp).
 //
 // Half-edge h = 3 f + i is edge i of face f = (v0, v1, v2), running v_{i+1} -> v_{i+2}. The half-edges are

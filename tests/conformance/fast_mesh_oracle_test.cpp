@@ -3,7 +3,7 @@
 // 2 in the median (the paper saw 1-2 typical, 4.9 at worst, between implementations). Meshes: bumpy grids
 // with both diagonal directions, near-flat (a cloth) and strongly bent, with the rest state apart from
 // the deformed one and equal to it (psi' = 0: the Hessian is psi'' grad theta grad theta^T alone), for
-// the two energies of CONVENTIONS.md.
+// the two energies of docs/contract.md.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // The certified oracle (hinge/oracle/oracle.hpp), three ways:
-// - against an independent evaluation: the reference (another transcription of eqs. 4-6) in MPFR at
+// - against an independent evaluation: the reference (another transcription of eqs. (4)-(6)) in MPFR at
 //   1024 or 4096 bits, rounded to double, on every conformance input and on hard cases; equal bit for
 //   bit wherever the reference's own error cannot matter;
 // - exact identities of the exact stage, checked in integers: translation and rotation invariance of
@@ -141,7 +141,7 @@ TEST(Oracle, ExactStageSatisfiesTheInvariancesExactly) {
       torque[2] += X[0] * g[1] - X[1] * g[0];
     }
     for (const Int& t : torque) EXPECT_EQ(t, 0) << c.id;
-    // Symmetry, and the zero block H03 (eq. 6).
+    // Symmetry, and the zero block H03 (eq. (6)).
     for (int i = 0; i < 12; ++i)
       for (int j = 0; j < 12; ++j) {
         EXPECT_EQ(e.h[12 * i + j], e.h[12 * j + i]) << c.id;
@@ -157,7 +157,7 @@ TEST(Oracle, ExactZerosAndTheBranchCut) {
   const CertifiedTheta flat = certified_theta_derivatives({0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, -1, 0});
   EXPECT_EQ(flat.theta, 0.0);
   EXPECT_EQ(flat.grad[0], 0.0);
-  EXPECT_EQ(flat.grad[2], -1.0);  // -n / h0 (CONVENTIONS.md check values)
+  EXPECT_EQ(flat.grad[2], -1.0);  // -n / h0 (docs/contract.md check values)
   // Folded flat onto itself: theta = +pi, never -pi, on and off the coordinate planes.
   for (const X12& x : {X12{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.25, 0.5, 0}, X12{7, 5, -4, 0, 0, 0, 3, 6, 6, 4, 5, 2}}) {
     const CertifiedTheta c = certified_theta_derivatives(x);

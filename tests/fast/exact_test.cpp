@@ -1,4 +1,4 @@
-// The sign filter of hinge/fast/exact.hpp: whenever it decides, its answer is the sign of the computed
+// The sign filter of fast/src/exact.hpp: whenever it decides, its answer is the sign of the computed
 // determinant (which the mesh path uses on the flat side without running the filter, assemble.hpp), and
 // that determinant is hinge_determinant's, bit for bit.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The per-hinge kernel (hinge/fast/hinge_kernel.hpp): against an independent high-precision evaluation
 // (hinge::reference in MPFR at 256 bits), against hinge::reference in the same scalar type, the check
-// values and branch cut of CONVENTIONS.md, exact validity decisions with the reference's messages, and
+// values and branch cut of docs/contract.md, exact validity decisions with the reference's messages, and
 // exact power-of-two scaling. Errors in units of the type's unit roundoff (tests/support/tolerance.hpp).
 #include <gtest/gtest.h>
 
@@ -37,7 +37,7 @@ TEST(HingeKernel, CheckValuesOfTheConventions) {
   const HingeDerivatives<double> d = hinge_derivatives<double>(x);
   EXPECT_EQ(d.theta, 0.0);
   EXPECT_FALSE(d.on_branch_cut);
-  // d theta / d x0 = -n / h0 = (0, 0, -1) (eq. 4), exactly: every quantity here is exact in double.
+  // d theta / d x0 = -n / h0 = (0, 0, -1) (eq. (4)), exactly: every quantity here is exact in double.
   EXPECT_EQ(d.grad[0], 0.0);
   EXPECT_EQ(d.grad[1], 0.0);
   EXPECT_EQ(d.grad[2], -1.0);
@@ -95,7 +95,7 @@ TYPED_TEST(FastScalarTypes, MatchesMpfr256InItsOwnUnits) {
 }
 
 TEST(HingeKernel, Bin128MatchesReferenceBin128) {
-  // Same scalar type, independent formulas (q_j and a_j here, eq. 6 block by block there): each within
+  // Same scalar type, independent formulas (q_j and a_j here, eq. (6) block by block there): each within
   // 32 units of 2^-113 of the exact values (previous test and the reference's), so 64 apart.
   for (const auto& x : test::well_shaped_hinges(test::cases(40), 23)) {
     const HingeDerivatives<bin128> f = hinge_derivatives<bin128>(x);
@@ -107,7 +107,7 @@ TEST(HingeKernel, Bin128MatchesReferenceBin128) {
 }
 
 TEST(HingeKernel, FoldedFlatIsPlusPiExactly) {
-  // x3 == x0: the two faces coincide, folded onto each other (CONVENTIONS.md: theta = +pi, never -pi).
+  // x3 == x0: the two faces coincide, folded onto each other (docs/contract.md: theta = +pi, never -pi).
   const std::array<double, 12> folded{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, 1, 0};
   for (const auto& x : {folded, std::array<double, 12>{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.25, 2, 0}}) {
     const HingeDerivatives<double> d = hinge_derivatives<double>(x);

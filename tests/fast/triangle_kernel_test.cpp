@@ -1,4 +1,4 @@
-// Eq. (7) (hinge/fast/triangle_kernel.hpp) on its own: the local triangle Hessians H^D, summed over the
+// Eq. (7) (fast/src/triangle_kernel.hpp) on its own: the local triangle Hessians H^D, summed over the
 // faces of a small mesh with the conditional transpose in exactly one face of every interior edge, plus
 // the hinges' psi'' grad theta grad theta^T, give the sum of the per-hinge Hessians of hinge::reference.
 // Broken on purpose: no transpose, or a transpose in both faces, must give a visibly wrong matrix.

@@ -1,7 +1,7 @@
 // Properties of hinge::fast: its per-hinge kernel against hinge::reference and against MPFR at 256 bits
 // (double and bin128), its exact invariances, and its mesh assembly (Algorithm 2) against
 // hinge::reference::assemble, including the choice of edge orientation (the conditional transpose of
-// eq. 7). docs/testing.md lists them with their bounds.
+// eq. (7)). docs/testing.md lists them with their bounds.
 #include <boost/math/constants/constants.hpp>
 
 #include "hinge/fast/assemble.hpp"
@@ -297,7 +297,7 @@ RC_GTEST_PROP(FastMeshBin128, AssemblyAgreesWithReference, ()) {
   mesh_agrees<bin128>(*gen::mesh(), *models(), *gen::uniform(0.5, 2), o, "fast mesh bin128: agreement");
 }
 
-// Edge orientation (which face of each interior edge takes the conditional transpose of eq. 7): in exact
+// Edge orientation (which face of each interior edge takes the conditional transpose of eq. (7)): in exact
 // arithmetic immaterial (N0 + N~0 is symmetric); the two assembled Hessians are two evaluations of one
 // exact result: within twice the bound.
 RC_GTEST_PROP(FastMeshDouble, EdgeOrientationChangesTheHessianByAFewUlps, ()) {

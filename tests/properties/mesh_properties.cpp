@@ -13,8 +13,8 @@ namespace {
 using reference::Model;
 
 // ---------------------------------------------------------------------------------------------------
-// Energy derivatives (eqs. 2-3) of one hinge (a two-face mesh) against central differences of an
-// independent energy: psi(theta) of CONVENTIONS.md and docs/quantities.md written here, with the
+// Energy derivatives (eqs. (2)-(3)) of one hinge (a two-face mesh) against central differences of an
+// independent energy: psi(theta) of docs/contract.md and docs/quantities.md written here, with the
 // independent theta and a = 3 |e_bar|^2 / A_bar from the rest hinge, all in MPFR.
 // ---------------------------------------------------------------------------------------------------
 Mesh two_faces(const Coordinates& x) {
@@ -58,7 +58,7 @@ std::array<mpfr, 12> to_mpfr(const Coordinates& x) {
   return p;
 }
 
-// a = 3 |e_bar|^2 / A_bar (CONVENTIONS.md), A_bar the two rest areas summed.
+// a = 3 |e_bar|^2 / A_bar (docs/contract.md), A_bar the two rest areas summed.
 mpfr stiffness_weight(const Coordinates& rest) {
   const auto p = to_mpfr(rest);
   auto sub = [&p](int a, int b) {

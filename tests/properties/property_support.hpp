@@ -1,5 +1,5 @@
 // tests/properties/property_support.hpp: what the property files share: evaluation in the scalar types
-// under test and in MPFR, an independent theta (written here from CONVENTIONS.md, no library code) and
+// under test and in MPFR, an independent theta (written here from docs/contract.md, no library code) and
 // its finite differences, the failure report, and the measured worst error of each property (printed at
 // exit with HINGE_TEST_MEASURE=1; docs/testing.md quotes them).
 #pragma once
@@ -134,7 +134,7 @@ inline reference::ThetaDerivatives<mpfr> exact_derivatives(const Coordinates& x)
 }
 
 // ---------------------------------------------------------------------------------------------------
-// An independent theta, straight from CONVENTIONS.md (no code of the library):
+// An independent theta, straight from docs/contract.md (no code of the library):
 //   N = (x1 - x0) x (x2 - x0),  Nt = (x2 - x3) x (x1 - x3),  e0 = x2 - x1,
 //   theta = atan2(((N x Nt) . e0) / |e0|, N . Nt)
 // and its central finite differences in MPFR (fd_bits), with steps h = 2^-120 l (l the largest coordinate

@@ -128,7 +128,7 @@ void accuracy(const HingeCase& h, const std::string& property) {
     return r.finish(units, bound, reason, d.hess, e.hess.template cast<S>().eval());
   };
   if (!finite(d)) RC_FAIL(report(INFINITY, 0, "a valid hinge must give finite results"));
-  // The branch: theta has the exact sign of (N x Nt) . e0 (CONVENTIONS.md), +pi on the cut.
+  // The branch: theta has the exact sign of (N x Nt) . e0 (docs/contract.md), +pi on the cut.
   const Coordinates& x = h.x;
   const int sign = hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]},
                                            {x[9], x[10], x[11]});
@@ -158,7 +158,7 @@ RC_GTEST_PROP(ReferenceBin128, NearDegenerateHingesFiniteAndWithinConditionBound
 }
 
 // The stronger claim, error within c kappa_shape u (the problem's own first-order condition, without the
-// cancellation factor kappa_angle of eq. 6). hinge::reference in double first failed it on near-flat or
+// cancellation factor kappa_angle of eq. (6)). hinge::reference in double first failed it on near-flat or
 // near-folded hinges with a short hinge edge (its long double stencil used plain cross products: n and n~
 // of a needle carried errors ~kappa_shape 2^-64, which the cancellation of N0 + N~0 amplified by
 // kappa_angle; docs/testing.md, "Findings" 1); stencil.hpp now uses Kahan's algorithm in long double too.
@@ -476,7 +476,7 @@ RC_GTEST_PROP(ReferenceBin128, DerivativesMatchFiniteDifferencesOfIndependentThe
 }
 
 // ---------------------------------------------------------------------------------------------------
-// Invalid input is rejected with hinge::InputError (CONVENTIONS.md): exact zero area, coincident vertices
+// Invalid input is rejected with hinge::InputError (docs/contract.md): exact zero area, coincident vertices
 // of one triangle, a zero-length hinge edge, a non-finite coordinate.
 // ---------------------------------------------------------------------------------------------------
 template <class S>

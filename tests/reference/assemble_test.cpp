@@ -1,5 +1,5 @@
 // Mesh assembly (assemble.hpp): the energy gradient against finite differences of the energy, the
-// Hessian against the per-hinge energy Hessians (eqs. 2-3), rest state = deformed state, and errors
+// Hessian against the per-hinge energy Hessians (eqs. (2)-(3)), rest state = deformed state, and errors
 // that name the hinge.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The check values and sign conventions of CONVENTIONS.md, and the exact handling of degenerate and
+// The check values and sign conventions of docs/contract.md, and the exact handling of degenerate and
 // folded hinges (reference/include/hinge/reference/evaluate.hpp).
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The bending energies of energy.hpp: psi' and psi'' against finite differences of psi for every model,
-// the rest state of Algorithm 1 (eq. 11 and a = 3|e|^2/A), and the errors where psi is infinite.
+// the rest state of Algorithm 1 (eq. (11) and a = 3|e|^2/A), and the errors where psi is infinite.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -73,7 +73,7 @@ TEST(Energy, BendingStiffnessIsEquationEleven) {
 }
 
 TEST(Energy, RestCoefficientsOfTheCheckHinge) {
-  // Check hinge of CONVENTIONS.md: |e0| = 1, both triangles of area 1/2: a = 3 * 1 / 1 = 3, theta_bar = 0.
+  // Check hinge of docs/contract.md: |e0| = 1, both triangles of area 1/2: a = 3 * 1 / 1 = 3, theta_bar = 0.
   const PreparedHinge<double> p = prepare_hinge<double>(test::flat_hinge());
   const auto c = rest_coefficients(Model::tan, p.stencil, bend_angle(p.stencil, p.sign), 2.0);
   EXPECT_EQ(c.a, 3.0);

@@ -1,5 +1,5 @@
-// grad theta (eq. 4) and Hess theta (eqs. 5-6) against central finite differences of an independent
-// theta (the atan2 definition of CONVENTIONS.md, written out here from the positions), in MPFR at 256
+// grad theta (eq. (4)) and Hess theta (eqs. (5)-(6)) against central finite differences of an independent
+// theta (the atan2 definition of docs/contract.md, written out here from the positions), in MPFR at 256
 // bits, asserting that the difference shrinks at O(h^2): halving h divides it by 4.
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@ namespace {
 using Real = mpfr;
 constexpr unsigned bits = 256;
 
-// theta straight from CONVENTIONS.md, with no code of the library.
+// theta straight from docs/contract.md, with no code of the library.
 Real theta_of(const std::array<Real, 12>& x) {
   auto p = [&x](int v) { return Vec3<Real>(x[3 * v], x[3 * v + 1], x[3 * v + 2]); };
   const Vec3<Real> N = (p(1) - p(0)).cross(p(2) - p(0)), Nt = (p(2) - p(3)).cross(p(1) - p(3)), e0 = p(2) - p(1);

@@ -1,5 +1,5 @@
 // Unit tests of build_topology and check_faces_nondegenerate (reference/src/mesh.cpp) against
-// CONVENTIONS.md "Hinges in a mesh" and "The hinge stencil".
+// docs/contract.md "Hinges in a mesh" and "The hinge stencil".
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -118,7 +118,7 @@ void expect_consistent(const Mesh& m, const Topology& t) {
 }
 
 TEST(Topology, TwoTriangleHingeLabelsMatchConventions) {
-  // The CONVENTIONS.md check hinge: x1 = (0,0,0), x2 = (1,0,0), x0 = (0.5,1,0), x3 = (0.5,-1,0), stored as
+  // The docs/contract.md check hinge: x1 = (0,0,0), x2 = (1,0,0), x0 = (0.5,1,0), x3 = (0.5,-1,0), stored as
   // vertices 0 = x1, 1 = x2, 2 = x0, 3 = x3; upper face (x0, x1, x2), lower face (x3, x2, x1).
   Mesh m;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};

@@ -177,7 +177,7 @@ TEST(Predicates, AgreeWithIntegerArithmeticAcrossAllExponents) {
 }
 
 TEST(Predicates, HingeOrientationMatchesConventionsCheckHinge) {
-  // CONVENTIONS.md: x1 = (0,0,0), x2 = (1,0,0), x0 = (0.5,1,0), x3 = (0.5,-1,0): flat, theta = 0, n = +z.
+  // docs/contract.md: x1 = (0,0,0), x2 = (1,0,0), x0 = (0.5,1,0), x3 = (0.5,-1,0): flat, theta = 0, n = +z.
   // Lifting x0 along +n makes theta negative; the predicate has the sign of theta.
   const Point x1{0, 0, 0}, x2{1, 0, 0}, x0{0.5, 1, 0}, x3{0.5, -1, 0};
   EXPECT_EQ(hinge_orientation_exact(x0, x1, x2, x3), 0);

@@ -4,7 +4,7 @@
 // maps them (so that RapidCheck shrinks towards simple shapes: the drawn integers shrink towards their
 // lower bounds), and every value shows itself exactly (17 significant digits) in a failure report.
 //
-// The hinge stencil (CONVENTIONS.md): x1 -> x2 is the hinge edge, T = (x0, x1, x2), T~ = (x3, x2, x1).
+// The hinge stencil (docs/contract.md): x1 -> x2 is the hinge edge, T = (x0, x1, x2), T~ = (x3, x2, x1).
 // Generated in a local frame, then rotated, scaled and moved:
 //
 //          x0 = (a, b, 0)                     x1 = (0, 0, 0),  x2 = (l0, 0, 0)
@@ -325,7 +325,7 @@ inline rc::Gen<LocalShape> round_shape() {
   });
 }
 
-// Well-shaped hinges (CONVENTIONS.md, as hinge::reference::well_shaped decides), scales in `scales`,
+// Well-shaped hinges (docs/contract.md, as hinge::reference::well_shaped decides), scales in `scales`,
 // offsets up to 10^3 times the size.
 inline rc::Gen<HingeCase> well_shaped_hinge(ScaleRange scales = {}) {
   auto shapes = rc::gen::mapcat(round_shape(), [](LocalShape s) { return with_angle(s, 0); });
@@ -477,7 +477,7 @@ inline rc::Gen<HingeCase> invalid_hinge() {
 // ---------------------------------------------------------------------------------------------------
 
 // The vertex order (x3, x2, x1, x0): the same hinge (upper and lower triangles exchange roles, the hinge
-// edge reverses): theta is unchanged and the derivatives are permuted (CONVENTIONS.md; docs/testing.md).
+// edge reverses): theta is unchanged and the derivatives are permuted (docs/contract.md; docs/testing.md).
 inline Coordinates relabel_hinge(const Coordinates& x) {
   Coordinates y;
   for (int v = 0; v < 4; ++v)

@@ -71,7 +71,7 @@ inline std::string describe(const std::array<double, 12>& x) {
 //   kappa       = kappa_shape * max(1, kappa_angle)
 //
 // kappa_shape is 2/sqrt(3) = 1.15 for an equilateral triangle, at most 1/0.15 = 6.7 on well-shaped hinges
-// (CONVENTIONS.md), and grows as 1/epsilon when an altitude (needle) or the hinge edge (then h1, h2 ~
+// (docs/contract.md), and grows as 1/epsilon when an altitude (needle) or the hinge edge (then h1, h2 ~
 // epsilon) collapses. It is the first-order condition of the problem: moving the vertices by delta l_max
 // moves theta by ~kappa_shape delta, grad theta and Hess theta (~1/h, ~1/h^2) by ~kappa_shape delta
 // relatively (measured: docs/testing.md).
@@ -212,7 +212,7 @@ std::string reference_reason() {
 
 // Energy derivatives of one hinge (reference::assemble on two faces) against finite differences of an
 // independent energy, on the scale of mesh_support.hpp: the theta derivatives' errors carried through
-// psi', psi'' and the chain rule (eqs. 2-3). Measured worst units / kappa on 2000 hinges per type: 1.7
+// psi', psi'' and the chain rule (eqs. (2)-(3)). Measured worst units / kappa on 2000 hinges per type: 1.7
 // (double), 2.6 (bin128).
 template <class Scalar>
 double energy_units_per_kappa() {

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The `hinge` command against CONVENTIONS.md: formats, per-line errors, exit statuses, output files.
+"""The `hinge` command against docs/contract.md: formats, per-line errors, exit statuses, output files.
 
 Usage: test_cli.py HINGE_BINARY EXAMPLES_DIR (docs/examples). Each check is a function test_*; the script runs them all,
 prints one line per check and "N passed, M failed", and exits nonzero if any failed.

@@ -1,5 +1,5 @@
 /* hinge/candidate.h: the C interface of an implementation checked by `hinge conform --plugin LIB.so`
- * (CONVENTIONS.md, docs/conformance.md). Usable from C89 and C++.
+ * (docs/contract.md, docs/conformance.md). Usable from C89 and C++.
  *
  *                 x0
  *               /  \          upper triangle (x0, x1, x2), hinge edge e0 = x2 - x1
@@ -8,7 +8,7 @@
  *                x3
  *
  * x:     the 12 coordinates x0.x, x0.y, x0.z, x1.x, ..., x3.z, each an exact double.
- * theta: the signed bend angle in (-pi, pi], with the sign of (N x Nt) . e0 (CONVENTIONS.md).
+ * theta: the signed bend angle in (-pi, pi], with the sign of (N x Nt) . e0 (docs/contract.md).
  * grad:  d theta / dx, 12 numbers in the order of x.
  * hess:  d^2 theta / dx^2, 144 numbers, row-major.
  * Return 0 on success, nonzero when the hinge cannot be evaluated (counted as missing).

@@ -1,4 +1,4 @@
-/* A candidate written in C against hinge/candidate.h: theta (CONVENTIONS.md) and its gradient (eq. 4)
+/* A candidate written in C against hinge/candidate.h: theta (docs/contract.md) and its gradient (eq. (4))
  * in plain double, the Hessian left zero. It shows the C interface; `hinge conform` must pass its theta
  * and gradient and reject it for the Hessian.
  *

@@ -10,7 +10,7 @@
 
 extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
   if (!candidates::reference_double(x, theta, grad, hess)) return 1;
-  // N~0 = n~ m~0^T / |e0|^2 (eq. 5) from the reference's stencil, which is scaled by 2^-exponent.
+  // N~0 = n~ m~0^T / |e0|^2 (eq. (5)) from the reference's stencil, which is scaled by 2^-exponent.
   const auto p = hinge::reference::prepare_hinge<double>(candidates::input(x));
   const auto& lower = p.stencil.lower;
   const double l0 = lower.l[0];

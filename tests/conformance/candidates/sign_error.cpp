@@ -1,5 +1,5 @@
 // A deliberately wrong candidate: the gradient of x3 with the wrong sign (grad_x3 = +n~ / h~0 instead of
-// -n~ / h~0, eq. 4); theta and the Hessian are right. `hinge conform` must reject it.
+// -n~ / h~0, eq. (4)); theta and the Hessian are right. `hinge conform` must reject it.
 #include "reference_double.hpp"
 
 extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {

@@ -11,7 +11,7 @@
 //          e~2  \  /  e~1            outward normal of edge i (in the triangle's plane), l_i = |e_i|
 //                x3
 //
-// Variables: x0, x1, x2, x3 (12); gradient 12, Hessian 12 x 12 (CONVENTIONS.md).
+// Variables: x0, x1, x2, x3 (12); gradient 12, Hessian 12 x 12 (docs/contract.md).
 //
 // Accuracy (double; src/hinge_kernel_lanes.hpp): the coordinate differences are exact (two_diff), every
 // dot and cross product is evaluated in double-double arithmetic (exact.hpp), both triangles and their
@@ -39,7 +39,7 @@
 // results are exactly invariant under power-of-two scaling (barring subnormal inputs or results, and
 // products of edge components below ~2^-250 M, which may underflow at one scale and not at another).
 //
-// Validity, decided exactly on the input doubles as hinge::reference does (CONVENTIONS.md): a non-finite
+// Validity, decided exactly on the input doubles as hinge::reference does (docs/contract.md): a non-finite
 // coordinate, x1 == x2, or a triangle of exactly zero area is an InputError (same messages); the sign
 // of theta comes from a floating-point filter, or from hinge_orientation_exact when the filter cannot
 // decide, so that a hinge folded flat onto itself has theta = +pi.
@@ -55,7 +55,7 @@ namespace hinge::fast {
 
 template <class Scalar>
 struct HingeDerivatives {
-  Scalar theta = 0;           // in (-pi, pi], CONVENTIONS.md
+  Scalar theta = 0;           // in (-pi, pi], docs/contract.md
   Scalar tan_half_theta = 0;  // eq. (12); +infinity on the branch cut
   bool on_branch_cut = false; // folded flat onto itself: theta = +pi exactly
   Eigen::Matrix<Scalar, 12, 1> grad;

@@ -28,7 +28,7 @@
 
 namespace hinge::fast {
 
-// Which of the two faces of an interior edge takes the conditional transpose (the paper's dagger, eq. 7)
+// Which of the two faces of an interior edge takes the conditional transpose (the paper's dagger, eq. (7))
 // and owns the hinge's per-edge terms (grad theta, the force and psi'' grad theta grad theta^T):
 // first_face: Edge::face[0], where the edge runs a -> b, counter-clockwise (the paper's choice, and the
 // default); second_face: Edge::face[1]. In exact arithmetic both give the same Hessian.

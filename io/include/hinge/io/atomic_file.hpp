@@ -1,4 +1,4 @@
-// hinge/io/atomic_file.hpp: output files that appear whole or not at all (CONVENTIONS.md: no output file
+// hinge/io/atomic_file.hpp: output files that appear whole or not at all (docs/contract.md: no output file
 // is left behind by a failed command).
 #pragma once
 

@@ -1,4 +1,4 @@
-// hinge/io/eval_output.hpp: reading the output format of `hinge eval` back (CONVENTIONS.md: one object per
+// hinge/io/eval_output.hpp: reading the output format of `hinge eval` back (docs/contract.md: one object per
 // line, {"id", "theta", "grad": [12], "hess": [144]} or {"id", "error"}), as `hinge conform --candidate`
 // reads a candidate implementation's results. Lenient where a candidate's numbers are bad (a NaN, null,
 // a missing array: that case is non-finite or missing, the others still count), strict where the file

@@ -1,4 +1,4 @@
-// hinge/io/jsonl.hpp: the JSON Lines format of `hinge eval` and `hinge oracle` (CONVENTIONS.md).
+// hinge/io/jsonl.hpp: the JSON Lines format of `hinge eval` and `hinge oracle` (docs/contract.md).
 // Input: {"id": "any string", "x": [12 numbers]} per line; other fields ignored; blank lines skipped.
 // Output: {"id", "theta", "grad", "hess"}, or {"id", "error"} for a hinge that cannot be evaluated, or
 // {"id": null-or-id, "line": N, "error"} for a line that is not valid input.

@@ -1,4 +1,4 @@
-// hinge/io/number.hpp: numbers written so that they read back exactly (CONVENTIONS.md: "Every number any
+// hinge/io/number.hpp: numbers written so that they read back exactly (docs/contract.md: "Every number any
 // command writes reads back exactly").
 #pragma once
 

@@ -1,4 +1,4 @@
-// hinge/io/obj.hpp: Wavefront OBJ input and output, exact to the bit (CONVENTIONS.md, `hinge hessian`).
+// hinge/io/obj.hpp: Wavefront OBJ input and output, exact to the bit (docs/contract.md, `hinge hessian`).
 // Only `v x y z` and `f a b c` lines matter (1-based or negative relative indices, `a/b/c` forms); other
 // lines are ignored. Coordinates are parsed with std::from_chars (correctly rounded), so a coordinate
 // written with 17 significant digits reads back bit for bit; Debian's tinyobjloader does not (it misreads

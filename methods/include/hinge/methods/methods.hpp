@@ -1,4 +1,4 @@
-// hinge/methods/methods.hpp: the evaluation methods by name (CONVENTIONS.md: `hinge eval --method`,
+// hinge/methods/methods.hpp: the evaluation methods by name (docs/contract.md: `hinge eval --method`,
 // `hinge hessian --method`, the study's rows, the Python module), each in a scalar type chosen at run
 // time (hinge/reference/scalar.hpp), every output rounded to double. A name is parsed once into a Method;
 // the calls below switch on it and go straight to the library that implements it.

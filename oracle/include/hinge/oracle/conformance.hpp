@@ -1,4 +1,4 @@
-// hinge/oracle/conformance.hpp: the conformance kit behind `hinge conform` (CONVENTIONS.md): the
+// hinge/oracle/conformance.hpp: the conformance kit behind `hinge conform` (docs/contract.md): the
 // conformance inputs by category, their certified outputs and condition numbers, the tolerance policy,
 // and the comparison of a candidate implementation's outputs. Documented in docs/conformance.md; the
 // files in conformance/ follow docs/conformance-format.md (format version below).

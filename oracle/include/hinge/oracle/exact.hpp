@@ -16,7 +16,7 @@
 //          et2  \  /  et1            et1 = x3 - x2, et2 = x1 - x3 (the paper's e~1, e~2; e~0 = e0)
 //                x3
 //
-// Variables: x0, x1, x2, x3 (12); gradient 12, Hessian 144 row-major (CONVENTIONS.md).
+// Variables: x0, x1, x2, x3 (12); gradient 12, Hessian 144 row-major (docs/contract.md).
 #pragma once
 
 #include <gmpxx.h>

@@ -1,5 +1,5 @@
 // hinge/oracle/mesh.hpp: the certified oracle for a whole mesh (hinge oracle --mesh). The energy
-// E = sum_i psi_i (eq. 1), its gradient (eq. 2) and Hessian (eq. 3) are enclosed hinge by hinge from the
+// E = sum_i psi_i (eq. (1)), its gradient (eq. (2)) and Hessian (eq. (3)) are enclosed hinge by hinge from the
 // exact form of each hinge (exact.hpp), summed in interval arithmetic, and each global entry rounded to
 // the nearest double by Ziv's strategy, as for one hinge (oracle.hpp).
 //

@@ -1,5 +1,5 @@
 // hinge/oracle/oracle.hpp: the certified oracle for one hinge. Every output is the double nearest to the
-// exact theta, grad theta (eq. 4) and Hess theta (eqs. 5-6, errata applied) of the 12 input doubles
+// exact theta, grad theta (eq. (4)) and Hess theta (eqs. (5)-(6), errata applied) of the 12 input doubles
 // taken as exact, with a proof carried by interval arithmetic:
 //
 // 1. exact stage (exact.hpp): edges, normals, dot and cross products in integers; validity checks, the
@@ -13,7 +13,7 @@
 //    within 2^-max_bits of a midpoint) is reported in `uncertified` with its enclosure, never silently
 //    rounded.
 //
-// Variables: x0, x1, x2, x3 (12); gradient 12, Hessian 144 row-major (CONVENTIONS.md).
+// Variables: x0, x1, x2, x3 (12); gradient 12, Hessian 144 row-major (docs/contract.md).
 #pragma once
 
 #include <array>

@@ -1,11 +1,11 @@
-// hinge/reference/bend_angle.hpp: the signed bend angle theta (CONVENTIONS.md; proofs/sign-convention.md).
+// hinge/reference/bend_angle.hpp: the signed bend angle theta (docs/contract.md; proofs/sign-convention.md).
 //
 // Two forms, each used where it serves:
-// - theta itself: the atan2 form of CONVENTIONS.md, theta = atan2(((N x Nt) . e0) / |e0|, N . Nt), in
+// - theta itself: the atan2 form of docs/contract.md, theta = atan2(((N x Nt) . e0) / |e0|, N . Nt), in
 //   (-pi, pi]. atan2 of the two unnormalized products is accurate over the whole range (no acos near 0
 //   or pi, where acos loses half the digits), and it needs no normalization.
 // - tan(theta/2), eq. (12): tan(theta/2) = sgn(det[n, n~, e0]) |n - n~| / |n + n~|. The tan-based energies
-//   need phi = 2 tan(theta/2) (eq. 8) and its derivatives, which are polynomials in tan(theta/2); eq. (12)
+//   need phi = 2 tan(theta/2) (eq. (8)) and its derivatives, which are polynomials in tan(theta/2); eq. (12)
 //   gives it without a trigonometric call (Algorithm 1, line 2; Algorithm 2, line 4).
 // Sign: theta has the sign of (n x n~) . e0: lifting x0 along +n makes theta negative.
 #pragma once
@@ -19,7 +19,7 @@ namespace hinge::reference {
 // doubles), or `computed` to take the sign of the value computed in Scalar.
 enum class ExactSign { negative = -1, zero = 0, positive = 1, computed = 2 };
 
-// atan2 form (CONVENTIONS.md). On the branch cut (numerator exactly zero, denominator negative) the
+// atan2 form (docs/contract.md). On the branch cut (numerator exactly zero, denominator negative) the
 // result is +pi, never -pi: a zero numerator is taken as +0.
 template <class Scalar>
 BendAngle<Scalar> bend_angle(const Stencil<Scalar>& s, ExactSign sign = ExactSign::computed) {

@@ -61,7 +61,7 @@ struct BendAngle {
 // The per-hinge constants of Algorithm 1.
 template <class Scalar>
 struct HingeCoefficients {
-  Scalar k = 0;          // bending stiffness (given, or eq. 11)
+  Scalar k = 0;          // bending stiffness (given, or eq. (11))
   Scalar a = 0;          // 3 |e_bar|^2 / A_bar
   Scalar theta_bar = 0;  // rest angle
   Scalar phi_bar = 0;    // phi(theta_bar) = 2 tan(theta_bar / 2), eq. (12) on the rest hinge

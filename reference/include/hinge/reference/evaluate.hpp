@@ -1,5 +1,5 @@
 // hinge/reference/evaluate.hpp: one hinge from its 12 input doubles (x0.x, x0.y, ..., x3.z): the exact
-// validity checks of CONVENTIONS.md, then theta, grad theta (eq. 4) and Hess theta (eqs. 5-6) in Scalar.
+// validity checks of docs/contract.md, then theta, grad theta (eq. (4)) and Hess theta (eqs. (5)-(6)) in Scalar.
 //
 // Inputs are exact doubles. Before any arithmetic:
 // - a non-finite coordinate, a zero-length hinge edge (x1 == x2) or a triangle of exactly zero area
@@ -70,7 +70,7 @@ HINGE_FOR_EACH_SCALAR(HINGE_REFERENCE_EVALUATE_EXTERN)
 
 namespace hinge::reference {
 
-// CONVENTIONS.md, "well-shaped": in each triangle the smallest altitude is at least 0.15 times the
+// docs/contract.md, "well-shaped": in each triangle the smallest altitude is at least 0.15 times the
 // longest edge, and 0.05 <= |theta| <= pi - 0.05 (evaluated in double; borderline cases may go either way).
 bool well_shaped(const std::array<double, 12>& x);
 

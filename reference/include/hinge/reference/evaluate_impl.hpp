@@ -13,7 +13,7 @@ namespace hinge::reference {
 
 template <HingeScalar Scalar>
 PreparedHinge<Scalar> prepare_hinge(const std::array<double, 12>& x) {
-  check_hinge(x);  // CONVENTIONS.md: non-finite, zero-length hinge edge, zero-area triangle (exactly)
+  check_hinge(x);  // docs/contract.md: non-finite, zero-length hinge edge, zero-area triangle (exactly)
   PreparedHinge<Scalar> p;
   p.sign = static_cast<ExactSign>(hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]},
                                                           {x[9], x[10], x[11]}));

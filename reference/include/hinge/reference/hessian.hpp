@@ -62,7 +62,7 @@ Mat12<Scalar> hessian(const Stencil<Scalar>& s) {
   block(1, 3) = bt.P(1, 0) - bt.Q(1);                                                    // eq. (6) H13
   block(2, 3) = bt.P(2, 0) - bt.Q(2);                                                    // eq. (6) H23
   block(1, 2) = b.P(1, 2) + b.P(2, 1).transpose() + bt.P(1, 2) + bt.P(2, 1).transpose() + N0_and_Nt0;  // eq. (6) H12
-  // H03 = 0 (eq. 6): left as zero. The remaining blocks by symmetry, H_ji = H_ij^T.
+  // H03 = 0 (eq. (6)): left as zero. The remaining blocks by symmetry, H_ji = H_ij^T.
   block(0, 1) = block(1, 0).transpose();
   block(0, 2) = block(2, 0).transpose();
   block(3, 1) = block(1, 3).transpose();

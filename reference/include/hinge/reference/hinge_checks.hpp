@@ -1,5 +1,5 @@
 // hinge/reference/hinge_checks.hpp: what makes a hinge invalid, decided exactly on its 12 input doubles
-// (CONVENTIONS.md: a non-finite coordinate, a hinge edge of zero length, a triangle of exactly zero area),
+// (docs/contract.md: a non-finite coordinate, a hinge edge of zero length, a triangle of exactly zero area),
 // and how errors name a coordinate and a mesh's hinge. Every evaluator (reference, fast, oracle, the
 // command) reports these conditions with the messages below, so that they read the same everywhere.
 //

@@ -1,4 +1,4 @@
-// hinge/reference/mesh.hpp: an indexed triangle mesh and its hinges (CONVENTIONS.md, "Hinges in a mesh").
+// hinge/reference/mesh.hpp: an indexed triangle mesh and its hinges (docs/contract.md, "Hinges in a mesh").
 //
 // A hinge is an interior edge with its two faces. For the edge x1 -> x2 as it appears in the cyclic
 // order of the upper face (x0, x1, x2), the lower face contains x2 -> x1 and its third vertex is x3:
@@ -62,7 +62,7 @@ Topology build_topology(const Mesh& mesh);
 std::array<double, 12> hinge_coordinates(const Mesh& mesh, const Hinge& h);
 
 // Throws hinge::InputError naming the first face whose three vertices have exactly zero area (collinear
-// or coincident), judged exactly on the doubles of `mesh` (CONVENTIONS.md).
+// or coincident), judged exactly on the doubles of `mesh` (docs/contract.md).
 void check_faces_nondegenerate(const Mesh& mesh);
 
 }  // namespace hinge

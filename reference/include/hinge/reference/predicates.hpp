@@ -1,4 +1,4 @@
-// hinge/reference/predicates.hpp: exact geometric decisions on exact double inputs (CONVENTIONS.md:
+// hinge/reference/predicates.hpp: exact geometric decisions on exact double inputs (docs/contract.md:
 // "judged exactly on those doubles"). A floating-point filter decides almost every case; the rest fall
 // back to exact rational arithmetic.
 #pragma once

@@ -2,7 +2,7 @@
 // hinge::fast::Assembler) fills MeshDerivatives in its scalar type; the commands and bindings take every
 // result rounded to double (RoundedTheta for one hinge, RoundedMesh for a mesh).
 //
-// Layout (CONVENTIONS.md): variables x0.x, x0.y, ..., x3.z for a hinge (gradient 12, Hessian 144
+// Layout (docs/contract.md): variables x0.x, x0.y, ..., x3.z for a hinge (gradient 12, Hessian 144
 // row-major); global index 3 v + c for a mesh, whose Hessian is stored as its upper triangle (row <= col),
 // 3n x 3n: use it as H.selfadjointView<Eigen::Upper>().
 #pragma once

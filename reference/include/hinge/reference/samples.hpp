@@ -1,5 +1,5 @@
 // hinge/reference/samples.hpp: inputs built in code, reproducibly from a seed: random well-shaped hinges
-// (what `hinge demo`, the benchmark and the tests sample), the grid triangulation of CONVENTIONS.md's
+// (what `hinge demo`, the benchmark and the tests sample), the grid triangulation of docs/contract.md's
 // scene format, and the benchmark's cloth (the paper's section 7 uses 11^2 to 81^2 vertices).
 #pragma once
 
@@ -10,7 +10,7 @@
 
 namespace hinge {
 
-// `count` well-shaped hinges (CONVENTIONS.md): 12 random coordinates in a box of side 10^U(-3, 3), all
+// `count` well-shaped hinges (docs/contract.md): 12 random coordinates in a box of side 10^U(-3, 3), all
 // offset by U(-offset, offset), kept when hinge::reference::well_shaped accepts them (std::mt19937_64
 // seeded with `seed`: the same hinges on every platform with the same standard library).
 std::vector<std::array<double, 12>> well_shaped_hinges(int count, unsigned seed, double offset = 100);

@@ -1,5 +1,5 @@
 // hinge/reference/scalar.hpp: the scalar types hinge is instantiated for, their names on command lines
-// (CONVENTIONS.md: float, double, long-double, float128, bin128, mpfr:BITS), and the glue they need:
+// (docs/contract.md: float, double, long-double, float128, bin128, mpfr:BITS), and the glue they need:
 // Eigen's NumTraits for Boost.Multiprecision, unqualified math functions, exact conversion from double.
 // This is the only header that includes Boost.Multiprecision.
 #pragma once

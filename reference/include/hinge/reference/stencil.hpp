@@ -138,7 +138,7 @@ Triangle<Scalar> make_triangle(const Vec3<Scalar>& e0, const Vec3<Scalar>& e1, c
   return t;
 }
 
-// Fig. 1: both triangles of a hinge, and the unnormalized normals of CONVENTIONS.md.
+// Fig. 1: both triangles of a hinge, and the unnormalized normals of docs/contract.md.
 template <class Scalar>
 struct Stencil {
   Vec3<Scalar> N;      // (x1 - x0) x (x2 - x0)
