@@ -7,6 +7,9 @@ find_path(HINGE_MPFR_INCLUDE_DIR mpfr.h REQUIRED)
 find_library(HINGE_MPFR_LIBRARY mpfr REQUIRED)
 find_library(HINGE_GMP_LIBRARY gmp REQUIRED)
 find_library(HINGE_MPFI_LIBRARY mpfi REQUIRED)
+# QD (libqd-dev): dd_real and qd_real, configured in hinge/reference/scalar.hpp.
+find_path(HINGE_QD_INCLUDE_DIR qd/dd_real.h REQUIRED)
+find_library(HINGE_QD_LIBRARY qd REQUIRED)
 find_library(HINGE_QUADMATH_LIBRARY quadmath
              HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES} REQUIRED)
 

@@ -9,6 +9,7 @@ packages=(
   libboost-dev                  # Boost.Multiprecision: float128, cpp_bin_float, mpfr_float, mpfi_float
   libmpfr-dev libgmp-dev        # MPFR back end (run-time precision)
   libmpfi-dev                   # interval arithmetic for the certified oracle
+  libqd-dev                     # QD: double-double and quad-double scalar types (dd, qd)
   libgtest-dev                  # unit tests
   librapidcheck-dev             # property tests
   libbenchmark-dev              # benchmarks

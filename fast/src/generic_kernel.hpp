@@ -472,7 +472,7 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   if (sign == 0) {  // coplanar: theta is 0 or pi exactly
     const bool folded = T.n[0] * U.n[0] + T.n[1] * U.n[1] + T.n[2] * U.n[2] < 0;
     out.on_branch_cut = folded;
-    out.theta = folded ? Scalar(boost::math::constants::pi<Scalar>()) : Scalar(0);
+    out.theta = folded ? pi_of<Scalar>() : Scalar(0);
     out.tan_half_theta = folded ? Scalar(std::numeric_limits<Scalar>::infinity()) : Scalar(0);
   } else {
     out.on_branch_cut = false;
@@ -510,7 +510,7 @@ template <class Scalar>
   hinge_kernel<long double, true>(x, want_hessian, w);
   out.on_branch_cut = w.on_branch_cut;
   if (w.on_branch_cut) {  // exactly as the kernel sets it, not pi rounded twice
-    out.theta = boost::math::constants::pi<Scalar>();
+    out.theta = pi_of<Scalar>();
     out.tan_half_theta = std::numeric_limits<Scalar>::infinity();
   } else {
     out.theta = static_cast<Scalar>(w.theta);

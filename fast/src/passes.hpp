@@ -107,7 +107,7 @@ HINGE_FAST_INLINE reference::BendAngle<Scalar> bend_angle(const Mesh& mesh, cons
   reference::BendAngle<Scalar> b;
   if (sign == 0) {  // coplanar: theta is 0 or pi
     b.on_branch_cut = folded_side;
-    b.theta = folded_side ? Scalar(boost::math::constants::pi<Scalar>()) : Scalar(0);
+    b.theta = folded_side ? pi_of<Scalar>() : Scalar(0);
     b.tan_half_theta = folded_side ? Scalar(std::numeric_limits<Scalar>::infinity()) : Scalar(0);
     return b;
   }

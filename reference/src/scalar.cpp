@@ -23,6 +23,8 @@ std::string ScalarType::name() const {
     case Kind::kind_float: return "float";
     case Kind::kind_double: return "double";
     case Kind::kind_long_double: return "long-double";
+    case Kind::kind_dd: return "dd";
+    case Kind::kind_qd: return "qd";
     case Kind::kind_float128: return "float128";
     case Kind::kind_bin128: return "bin128";
     case Kind::kind_mpfr: return "mpfr:" + std::to_string(mpfr_bits);
@@ -35,6 +37,8 @@ ScalarType parse_scalar_type(std::string_view name) {
   if (name == "float") return {K::kind_float, 0};
   if (name == "double") return {K::kind_double, 0};
   if (name == "long-double") return {K::kind_long_double, 0};
+  if (name == "dd") return {K::kind_dd, 0};
+  if (name == "qd") return {K::kind_qd, 0};
   if (name == "float128") return {K::kind_float128, 0};
   if (name == "bin128") return {K::kind_bin128, 0};
   if (name.starts_with("mpfr:")) {
@@ -45,7 +49,7 @@ ScalarType parse_scalar_type(std::string_view name) {
       return {K::kind_mpfr, bits};
   }
   throw std::invalid_argument("unknown scalar type '" + std::string(name) +
-                              "': expected float, double, long-double, float128, bin128 or mpfr:BITS "
+                              "': expected float, double, long-double, dd, qd, float128, bin128 or mpfr:BITS "
                               "(2 <= BITS <= 1000000)");
 }
 

@@ -74,7 +74,7 @@ TEST(HingeKernel, DoubleMatchesMpfr256OnWellShapedHinges) {
 
 template <class Scalar>
 class FastScalarTypes : public ::testing::Test {};
-using Types = ::testing::Types<float, long double, float128, bin128, mpfr>;
+using Types = ::testing::Types<float, long double, dd, qd, float128, bin128, mpfr>;
 TYPED_TEST_SUITE(FastScalarTypes, Types);
 
 TYPED_TEST(FastScalarTypes, MatchesMpfr256InItsOwnUnits) {

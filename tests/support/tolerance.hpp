@@ -25,7 +25,11 @@ double normwise_units(const A& computed, const B& exact, double u) {
   using Scalar = typename A::Scalar;
   long double difference = 0, norm = 0;
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(exact.size()); ++i) {
-    const Scalar e = static_cast<Scalar>(exact.reshaped()[i]);
+    const Scalar e = [&] {
+      if constexpr (std::same_as<std::remove_cvref_t<decltype(exact.reshaped()[i])>, mpfr> && QdScalar<Scalar>)
+        return from_mpfr<Scalar>(exact.reshaped()[i]);
+      else return static_cast<Scalar>(exact.reshaped()[i]);
+    }();
     const long double d = static_cast<long double>(to_double(Scalar(computed.reshaped()[i] - e)));
     const long double en = static_cast<long double>(to_double(e));
     difference += d * d;

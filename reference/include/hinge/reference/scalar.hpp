@@ -1,10 +1,28 @@
 // hinge/reference/scalar.hpp: the scalar types hinge is instantiated for, their names on command lines
-// (docs/contract.md: float, double, long-double, float128, bin128, mpfr:BITS), and the glue they need:
-// Eigen's NumTraits for Boost.Multiprecision, unqualified math functions, exact conversion from double.
-// This is the only header that includes Boost.Multiprecision.
+// (docs/contract.md: float, double, long-double, dd, qd, float128, bin128, mpfr:BITS), and the glue they
+// need: Eigen's NumTraits for Boost.Multiprecision and for QD, unqualified math functions, exact
+// conversion from double, pi. This is the only header that includes Boost.Multiprecision or QD.
+//
+// QD (libqd, Hida, Li & Bailey) is configured here, before its headers: its inline arithmetic with the
+// IEEE-style addition (fl(a + b) = (1 + d)(a + b), |d| <= eps, QD_IEEE_ADD) instead of Debian's default
+// Cray-style one (fl(a + b) = (1 + d1) a + (1 + d2) b), which loses every digit where a and b cancel, as
+// they do in the edge differences and the cross products of thin triangles; and its exact multiplication
+// and division (QD_SLOPPY_MUL, QD_SLOPPY_DIV off). The library's own compiled functions (sqrt, atan2,
+// sin, cos) keep Debian's settings: a few units of their precision. Its numeric_limits derives from
+// double's, with epsilon() = 2^-104 (dd) and 2^-209 (qd): unit_roundoff below is half of that.
 #pragma once
 
+#include <qd/qd_config.h>
+#undef QD_SLOPPY_MUL
+#undef QD_SLOPPY_DIV
+#ifndef QD_IEEE_ADD
+#define QD_IEEE_ADD 1
+#endif
+#include <qd/dd_real.h>
+#include <qd/qd_real.h>
+
 #include <Eigen/Core>
+#include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/eigen.hpp>
 #include <boost/multiprecision/float128.hpp>
@@ -27,10 +45,17 @@ using bin128 = boost::multiprecision::cpp_bin_float_quad;
 using mpfr = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
                                            boost::multiprecision::et_off>;
 
+// QD's double-double (about 106 bits) and quad-double (about 212 bits), in the global namespace.
+using dd = ::dd_real;
+using qd = ::qd_real;
+
 template <class Scalar>
 concept HingeScalar = std::same_as<Scalar, float> || std::same_as<Scalar, double> ||
-                      std::same_as<Scalar, long double> || std::same_as<Scalar, float128> ||
-                      std::same_as<Scalar, bin128> || std::same_as<Scalar, mpfr>;
+                      std::same_as<Scalar, long double> || std::same_as<Scalar, dd> || std::same_as<Scalar, qd> ||
+                      std::same_as<Scalar, float128> || std::same_as<Scalar, bin128> || std::same_as<Scalar, mpfr>;
+// QD's types (their own conversions, constants and limits).
+template <class Scalar>
+concept QdScalar = std::same_as<Scalar, dd> || std::same_as<Scalar, qd>;
 
 // Sets the precision of every mpfr value created afterwards to at least `bits` bits and returns the
 // precision obtained. Boost.Multiprecision sets MPFR precision in decimal digits, so the bits obtained
@@ -41,11 +66,20 @@ unsigned mpfr_bits();
 
 // A scalar type named as on the command line.
 struct ScalarType {
-  enum class Kind { kind_float, kind_double, kind_long_double, kind_float128, kind_bin128, kind_mpfr } kind = Kind::kind_double;
+  enum class Kind {
+    kind_float,
+    kind_double,
+    kind_long_double,
+    kind_dd,
+    kind_qd,
+    kind_float128,
+    kind_bin128,
+    kind_mpfr
+  } kind = Kind::kind_double;
   unsigned mpfr_bits = 0;  // for Kind::kind_mpfr only
   std::string name() const;
 };
-// Parses "float", "double", "long-double", "float128", "bin128", "mpfr:BITS" (2 <= BITS <= 1000000);
+// Parses "float", "double", "long-double", "dd", "qd", "float128", "bin128", "mpfr:BITS" (2 <= BITS <= 1000000);
 // throws std::invalid_argument with the list of valid names otherwise.
 ScalarType parse_scalar_type(std::string_view name);
 
@@ -58,6 +92,8 @@ decltype(auto) visit_scalar_type(const ScalarType& type, F&& f) {
     case K::kind_float: return f.template operator()<float>();
     case K::kind_double: return f.template operator()<double>();
     case K::kind_long_double: return f.template operator()<long double>();
+    case K::kind_dd: return f.template operator()<dd>();
+    case K::kind_qd: return f.template operator()<qd>();
     case K::kind_float128: return f.template operator()<float128>();
     case K::kind_bin128: return f.template operator()<bin128>();
     case K::kind_mpfr: set_mpfr_bits(type.mpfr_bits); return f.template operator()<mpfr>();
@@ -71,6 +107,8 @@ std::string scalar_name() {
   if constexpr (std::same_as<Scalar, float>) return "float";
   else if constexpr (std::same_as<Scalar, double>) return "double";
   else if constexpr (std::same_as<Scalar, long double>) return "long-double";
+  else if constexpr (std::same_as<Scalar, dd>) return "dd";
+  else if constexpr (std::same_as<Scalar, qd>) return "qd";
   else if constexpr (std::same_as<Scalar, float128>) return "float128";
   else if constexpr (std::same_as<Scalar, bin128>) return "bin128";
   else return "mpfr:" + std::to_string(mpfr_bits());
@@ -79,7 +117,14 @@ std::string scalar_name() {
 // Unit roundoff u = 2^-p of Scalar (p the significand precision; at run time for mpfr).
 template <HingeScalar Scalar>
 Scalar unit_roundoff() {
-  return std::numeric_limits<Scalar>::epsilon() / 2;
+  return Scalar(std::numeric_limits<Scalar>::epsilon()) / 2;
+}
+
+// pi rounded to Scalar.
+template <HingeScalar Scalar>
+Scalar pi_of() {
+  if constexpr (QdScalar<Scalar>) return Scalar::_pi;
+  else return boost::math::constants::pi<Scalar>();
 }
 
 // Scalar from an exact double. Exact for every type but float, which rounds to nearest.
@@ -92,7 +137,36 @@ Scalar from_double(double x) {
 template <HingeScalar Scalar>
 double to_double(const Scalar& x) {
   if constexpr (std::is_floating_point_v<Scalar>) return static_cast<double>(x);
+  else if constexpr (QdScalar<Scalar>) return ::to_double(x);  // QD's: hi + lo rounded once (dd: the hi part)
   else return x.template convert_to<double>();
+}
+
+// x as an mpfr value at the current precision (mpfr_bits(): exact when that is at least Scalar's).
+template <HingeScalar Scalar>
+mpfr to_mpfr(const Scalar& x) {
+  if constexpr (std::same_as<Scalar, mpfr>) return x;
+  else if constexpr (std::same_as<Scalar, dd>) return mpfr(x.x[0]) + mpfr(x.x[1]);
+  else if constexpr (std::same_as<Scalar, qd>) return ((mpfr(x.x[0]) + mpfr(x.x[1])) + mpfr(x.x[2])) + mpfr(x.x[3]);
+  else return mpfr(x);
+}
+
+// The mpfr value x rounded to Scalar (dd and qd: component by component, each the rounded remainder).
+template <HingeScalar Scalar>
+Scalar from_mpfr(const mpfr& x) {
+  if constexpr (std::same_as<Scalar, mpfr>) return x;
+  else if constexpr (QdScalar<Scalar>) {
+    constexpr int parts = std::same_as<Scalar, dd> ? 2 : 4;
+    double c[4] = {0, 0, 0, 0};
+    mpfr rest = x;
+    for (int i = 0; i < parts; ++i) {
+      c[i] = rest.template convert_to<double>();
+      rest -= c[i];
+    }
+    if constexpr (parts == 2) return dd(c[0], c[1]);
+    else return qd(c[0], c[1], c[2], c[3]);
+  } else {
+    return static_cast<Scalar>(x);
+  }
 }
 
 // Math functions called unqualified in the kernels: std's for the built-in types, Boost's (found by
@@ -106,5 +180,27 @@ using std::tan;
 
 }  // namespace hinge
 
+// Eigen's traits for QD's types (the only glue Eigen needs: Boost.Multiprecision brings its own).
+namespace Eigen {
+template <class Q>
+struct QdNumTraits : GenericNumTraits<Q> {
+  using Real = Q;
+  using NonInteger = Q;
+  using Literal = Q;
+  using Nested = Q;
+  enum { IsComplex = 0, IsInteger = 0, IsSigned = 1, RequireInitialization = 1, ReadCost = 2, AddCost = 8, MulCost = 16 };
+  static Q epsilon() { return Q(std::numeric_limits<Q>::epsilon()); }
+  static Q dummy_precision() { return Q(std::numeric_limits<Q>::epsilon()) * 1024; }
+  static Q highest() { return std::numeric_limits<Q>::max(); }
+  static Q lowest() { return -std::numeric_limits<Q>::max(); }
+  static int digits10() { return std::numeric_limits<Q>::digits10; }
+};
+template <>
+struct NumTraits<::dd_real> : QdNumTraits<::dd_real> {};
+template <>
+struct NumTraits<::qd_real> : QdNumTraits<::qd_real> {};
+}  // namespace Eigen
+
 // X(type) for every scalar type the library instantiates (explicit instantiations, extern templates).
-#define HINGE_FOR_EACH_SCALAR(X) X(float) X(double) X(long double) X(::hinge::float128) X(::hinge::bin128) X(::hinge::mpfr)
+#define HINGE_FOR_EACH_SCALAR(X) \
+  X(float) X(double) X(long double) X(::hinge::dd) X(::hinge::qd) X(::hinge::float128) X(::hinge::bin128) X(::hinge::mpfr)
