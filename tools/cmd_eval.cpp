@@ -12,7 +12,7 @@ Action add_eval(CLI::App& app) {
     std::string method = "reference", scalar = "double", input, output;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("--method", o->method, "Evaluation method: reference or fast")->capture_default_str();
+  cmd->add_option("--method", o->method, "Evaluation method: reference, fast, autodiff, symbolic")->capture_default_str();
   cmd->add_option("--scalar", o->scalar,
                   "Scalar type: float, double, long-double, dd, qd, float128, bin128, mpfr:BITS")->capture_default_str();
   cmd->add_option("--input", o->input, "Input JSON Lines file (default: standard input)");

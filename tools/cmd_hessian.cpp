@@ -15,7 +15,7 @@ Action add_hessian(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   add_mesh_options(cmd, o->mesh, true);
-  cmd->add_option("--method", o->method, "Evaluation method: reference or fast")->capture_default_str();
+  cmd->add_option("--method", o->method, "Evaluation method: reference, fast, autodiff, symbolic")->capture_default_str();
   cmd->add_option("--scalar", o->scalar, "Scalar type: float, double, long-double, dd, qd, float128, bin128, mpfr:BITS")
       ->capture_default_str();
   cmd->footer("Prints 'energy <value>'. Exit: 0 done; 1 invalid input (message names file and line, edge or face;\n"

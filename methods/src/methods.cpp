@@ -3,19 +3,22 @@
 
 #include <stdexcept>
 
+#include "baselines.hpp"
 #include "hinge/fast/rounded.hpp"
 #include "hinge/reference/rounded.hpp"
 
 namespace hinge::methods {
 
 namespace {
-constexpr Method kMethods[] = {Method::reference, Method::fast};
+constexpr Method kMethods[] = {Method::reference, Method::fast, Method::autodiff, Method::symbolic};
 }  // namespace
 
 std::string_view method_name(Method method) {
   switch (method) {
     case Method::reference: return "reference";
     case Method::fast: return "fast";
+    case Method::autodiff: return "autodiff";
+    case Method::symbolic: return "symbolic";
   }
   return "?";
 }
@@ -39,6 +42,9 @@ reference::RoundedTheta evaluate_hinge(Method method, const ScalarType& scalar, 
   switch (method) {
     case Method::reference: return reference::theta_derivatives_rounded(scalar, x);
     case Method::fast: return fast::hinge_derivatives_rounded(scalar, x);
+    case Method::autodiff:
+    case Method::symbolic:
+      return visit_scalar_type(scalar, [&]<class Scalar>() { return detail::baseline_hinge<Scalar>(method, x); });
   }
   throw std::invalid_argument("evaluate_hinge: unknown method");
 }
@@ -49,6 +55,9 @@ reference::RoundedMesh evaluate_mesh(Method method, const ScalarType& scalar, co
       return reference::assemble_rounded(scalar, *in.deformed, *in.rest, *in.topology, in.parameters, in.request);
     case Method::fast:
       return fast::assemble_rounded(scalar, *in.deformed, *in.rest, *in.topology, in.parameters, in.request, in.threads);
+    case Method::autodiff:
+    case Method::symbolic:
+      return visit_scalar_type(scalar, [&]<class Scalar>() { return detail::baseline_mesh<Scalar>(method, in); });
   }
   throw std::invalid_argument("evaluate_mesh: unknown method");
 }

@@ -17,11 +17,10 @@ RoundedTheta theta_in(const std::array<double, 12>& x) {
   return round_theta(d.angle.theta, d.grad, d.hess);
 }
 
-template <class Scalar>
-RoundedMesh mesh_in(const Mesh& deformed, const Mesh& rest, const Topology& topology, const EnergyParameters& parameters,
-                    unsigned request) {
-  const auto coefficients = rest_state<Scalar>(rest, topology, parameters);
-  const MeshDerivatives<Scalar> m = assemble<Scalar>(deformed, topology, coefficients, parameters.model, request);
+}  // namespace
+
+template <HingeScalar Scalar>
+RoundedMesh round_mesh(const MeshDerivatives<Scalar>& m, unsigned request) {
   RoundedMesh r;
   r.energy = rounded_to_double(m.energy, "the energy");
   r.gradient.resize(static_cast<std::size_t>(m.gradient.size()));
@@ -36,6 +35,18 @@ RoundedMesh mesh_in(const Mesh& deformed, const Mesh& rest, const Topology& topo
     r.hessian.setFromTriplets(t.begin(), t.end());
   }
   return r;
+}
+#define HINGE_ROUND_MESH_INSTANTIATE(S) template RoundedMesh round_mesh<S>(const MeshDerivatives<S>&, unsigned);
+HINGE_FOR_EACH_SCALAR(HINGE_ROUND_MESH_INSTANTIATE)
+#undef HINGE_ROUND_MESH_INSTANTIATE
+
+namespace {
+
+template <class Scalar>
+RoundedMesh mesh_in(const Mesh& deformed, const Mesh& rest, const Topology& topology, const EnergyParameters& parameters,
+                    unsigned request) {
+  const auto coefficients = rest_state<Scalar>(rest, topology, parameters);
+  return round_mesh(assemble<Scalar>(deformed, topology, coefficients, parameters.model, request), request);
 }
 
 }  // namespace

@@ -94,7 +94,7 @@ def test_branch_cut_is_plus_pi():
 
 def test_usage_errors_exit_2():
     assert run(["eval", "--scalar", "quad"])[0] == 2
-    assert run(["eval", "--method", "symbolic"])[0] == 2
+    assert run(["eval", "--method", "symbolc"])[0] == 2  # misspelt
     assert run(["frobnicate"])[0] == 2
     assert run(["hessian"])[0] == 2  # --mesh is required
 

@@ -19,18 +19,20 @@ namespace hinge::methods {
 enum class Method {
   reference,  // hinge::reference: eqs. (4)-(6) transcribed (mesh: hinge by hinge)
   fast,       // hinge::fast: the lean per-hinge kernel (mesh: Algorithm 2)
+  autodiff,   // hinge::baselines: Eigen's AutoDiff on the atan2 definition (mesh: hinge by hinge, as reference)
+  symbolic,   // hinge::baselines: SymPy-generated code from the atan2 definition (mesh: as reference)
 };
 
-// "reference", "fast".
+// "reference", "fast", "autodiff", "symbolic".
 std::string_view method_name(Method method);
 // The names, in the order above.
 std::vector<std::string> method_names();
-// Throws std::invalid_argument "unknown method 'X': expected one of reference, fast".
+// Throws std::invalid_argument "unknown method 'X': expected one of reference, fast, autodiff, symbolic".
 Method parse_method(std::string_view name);
 
 // theta, grad theta, Hess theta of the hinge x (x0.x, ..., x3.z) by `method` in `scalar`, rounded to double.
 // Throws hinge::InputError (degenerate or non-finite input) or hinge::DomainError (a result outside the range
-// of double).
+// of double; for autodiff and symbolic also a NaN or infinity from an intermediate, which they do not rescale).
 reference::RoundedTheta evaluate_hinge(Method method, const ScalarType& scalar, const std::array<double, 12>& x);
 
 // A whole mesh: what `request` asks (reference::want_energy | want_gradient | want_hessian).

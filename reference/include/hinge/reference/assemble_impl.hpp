@@ -42,10 +42,13 @@ void set_previous_state(std::vector<HingeCoefficients<Scalar>>& coefficients, co
   }
 }
 
-template <HingeScalar Scalar>
-MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
-                                 const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
-                                 unsigned request) {
+// The hinge-by-hinge assembly with any per-hinge evaluation: theta_of(x, with_hessian) returns a
+// ThetaDerivatives<Scalar> of the hinge x (bend angle with tan(theta/2), gradient, Hessian). assemble()
+// below passes the reference's; hinge::methods passes the other methods' (autodiff, symbolic).
+template <class Scalar, class ThetaOf>
+MeshDerivatives<Scalar> assemble_with(const Mesh& deformed, const Topology& topology,
+                                      const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
+                                      unsigned request, ThetaOf&& theta_of) {
   check_same_mesh(deformed, topology, "deformed");
   if (coefficients.size() != topology.hinges.size())
     throw std::invalid_argument("assemble: one HingeCoefficients per hinge expected");
@@ -59,8 +62,7 @@ MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
   for (Index i = 0; i < static_cast<Index>(topology.hinges.size()); ++i) {
     const Hinge& hinge = topology.hinges[i];
     for_hinge(topology, i, [&] {
-      const ThetaDerivatives<Scalar> d =
-          theta_derivatives<Scalar>(hinge_coordinates(deformed, hinge), want_hess);
+      const ThetaDerivatives<Scalar> d = theta_of(hinge_coordinates(deformed, hinge), want_hess);
       const Psi<Scalar> p = psi(model, coefficients[i], d.angle);
       out.energy += p.value;  // eq. (1)
       if (want_grad) {
@@ -89,6 +91,16 @@ MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
     out.hessian.setFromTriplets(triplets.begin(), triplets.end());
   }
   return out;
+}
+
+template <HingeScalar Scalar>
+MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
+                                 const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
+                                 unsigned request) {
+  return assemble_with<Scalar>(deformed, topology, coefficients, model, request,
+                               [](const std::array<double, 12>& x, bool with_hessian) {
+                                 return theta_derivatives<Scalar>(x, with_hessian);
+                               });
 }
 
 }  // namespace hinge::reference

@@ -39,6 +39,14 @@ RoundedTheta round_theta(const Scalar& theta, const Grad& grad, const Hess& hess
 // (degenerate or non-finite input) or DomainError (a result outside the range of double).
 RoundedTheta theta_derivatives_rounded(const ScalarType& type, const std::array<double, 12>& x);
 
+// A mesh evaluation in Scalar rounded to double (the Hessian if `request` asks for it). Throws DomainError
+// for a result outside the range of double.
+template <HingeScalar Scalar>
+RoundedMesh round_mesh(const MeshDerivatives<Scalar>& m, unsigned request);
+#define HINGE_ROUND_MESH_EXTERN(S) extern template RoundedMesh round_mesh<S>(const MeshDerivatives<S>&, unsigned);
+HINGE_FOR_EACH_SCALAR(HINGE_ROUND_MESH_EXTERN)
+#undef HINGE_ROUND_MESH_EXTERN
+
 // rest_state + assemble in `type`, rounded to double. Throws as they do, and DomainError for a result
 // outside the range of double.
 RoundedMesh assemble_rounded(const ScalarType& type, const Mesh& deformed, const Mesh& rest, const Topology& topology,

@@ -1,0 +1,36 @@
+// hinge::baselines::symbolic_derivatives (hinge/baselines/symbolic.hpp): the code SymPy generated
+// (symbolic_theta.inc, from symbolic_theta.py), called per output level. Instantiated per scalar family
+// (symbolic_*.cpp).
+#pragma once
+
+#include "common.hpp"
+#include "hinge/baselines/symbolic.hpp"
+
+namespace hinge::baselines {
+namespace generated {
+using hinge::atan2;  // the built-in types' std:: functions; the others' are found by argument-dependent lookup
+using hinge::sqrt;
+#include "symbolic_theta.inc"
+}  // namespace generated
+
+template <HingeScalar Scalar>
+Derivatives<Scalar> symbolic_derivatives(const std::array<double, 12>& x, Outputs outputs) {
+  const std::array<Scalar, 12> s = detail::checked_coordinates<Scalar>(x);
+  Derivatives<Scalar> d;
+  d.grad.setZero();
+  d.hess.setZero();
+  switch (outputs) {
+    case Outputs::theta: generated::symbolic_theta(s.data(), d.theta); break;
+    case Outputs::gradient: generated::symbolic_theta_gradient(s.data(), d.theta, d.grad.data()); break;
+    case Outputs::hessian:  // the generated code writes row-major; Eigen's matrix is column-major and symmetric here
+      generated::symbolic_theta_hessian(s.data(), d.theta, d.grad.data(), d.hess.data());
+      break;
+  }
+  d.theta = detail::on_branch(d.theta);
+  return d;
+}
+
+}  // namespace hinge::baselines
+
+#define HINGE_SYMBOLIC_INSTANTIATE(S) \
+  template hinge::baselines::Derivatives<S> hinge::baselines::symbolic_derivatives<S>(const std::array<double, 12>&, Outputs);
