@@ -427,6 +427,32 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
       largest = largest_component();  // in [1, 2)
     }
     P2 = inverse_square_power_of_two(largest);
+  } else if constexpr (QdScalar<Scalar>) {
+    // QD's types have double's exponent range: their products of up to six edge components overflow or
+    // underflow where the edges are far from 1 (and QD's atan2 fails on what results). The edges are
+    // brought by a power of two 2^-p to a largest component M in [1, 2), as above but always: exact (dd's
+    // and qd's components scale alike), so every hinge computes the same bits as at its own scale, and
+    // the results are scaled back exactly. When a difference overflowed, the coordinates are quartered first.
+    auto largest_component = [&f0, &f1, &f2] {
+      double m = 0;
+      for (int c = 0; c < 3; ++c)
+        for (int l = 0; l < 2; ++l)
+          m = std::max({m, std::fabs(to_double(f0[c][l])), std::fabs(to_double(f1[c][l])), std::fabs(to_double(f2[c][l]))});
+      return m;
+    };
+    double largest = largest_component();
+    if (!(largest <= std::numeric_limits<double>::max())) {
+      std::array<double, 12> quarter;
+      for (int i = 0; i < 12; ++i) quarter[i] = x[i] * 0x1p-4;
+      edges(quarter, f0, f1, f2);
+      exponent = 4;
+      largest = largest_component();
+    }
+    const int shift = std::ilogb(largest);  // largest > 0: x1 != x2
+    for (auto* f : {&f0, &f1, &f2})
+      for (int c = 0; c < 3; ++c)
+        for (int l = 0; l < 2; ++l) (*f)[c][l] = ldexp((*f)[c][l], -shift);
+    exponent += shift;
   }
 
   Vec<W> C;  // 2A n (upper), -2A~ n~ (lower): with the hinge edge, f2 x f0 = f1 x f2

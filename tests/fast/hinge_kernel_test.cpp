@@ -94,6 +94,28 @@ TYPED_TEST(FastScalarTypes, MatchesMpfr256InItsOwnUnits) {
   }
 }
 
+TYPED_TEST(FastScalarTypes, PowerOfTwoScalingIsExact) {
+  using Scalar = TypeParam;
+  if constexpr (!std::same_as<Scalar, float>) {  // float's range holds no result of a hinge at 2^+-300
+    // As for double (below): the results of x 2^k are exactly those of x, with grad theta times 2^-k and
+    // Hess theta times 2^-2k. dd and qd (double's exponent range) rescale their edges to do so; the other
+    // types' ranges hold every intermediate, and scaling by a power of two changes no rounding.
+    for (const auto& x : test::well_shaped_hinges(10, 25)) {
+      if constexpr (std::same_as<Scalar, mpfr>) set_mpfr_bits(113);
+      const HingeDerivatives<Scalar> d = hinge_derivatives<Scalar>(x);
+      for (int k : {-450, -300, 300, 450}) {
+        std::array<double, 12> y;
+        for (int i = 0; i < 12; ++i) y[i] = std::ldexp(x[i], k);
+        const HingeDerivatives<Scalar> t = hinge_derivatives<Scalar>(y);
+        using std::ldexp;
+        ASSERT_TRUE(t.theta == d.theta) << k << " " << test::describe(x);
+        for (int i = 0; i < 12; ++i) ASSERT_TRUE(t.grad[i] == ldexp(d.grad[i], -k)) << k << " " << i;
+        for (int i = 0; i < 144; ++i) ASSERT_TRUE(t.hess.data()[i] == ldexp(d.hess.data()[i], -2 * k)) << k << " " << i;
+      }
+    }
+  }
+}
+
 TEST(HingeKernel, Bin128MatchesReferenceBin128) {
   // Same scalar type, independent formulas (q_j and a_j here, eq. (6) block by block there): each within
   // 32 units of 2^-113 of the exact values (previous test and the reference's), so 64 apart.

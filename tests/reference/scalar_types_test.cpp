@@ -50,6 +50,28 @@ TYPED_TEST(ScalarTypes, HessianMatchesMpfr256OnWellShapedHinges) {
   std::cout << "[ measured ] " << scalar_name<Scalar>() << ": worst normwise Hessian error " << worst << " units\n";
 }
 
+TYPED_TEST(ScalarTypes, PowerOfTwoScalingIsExact) {
+  using Scalar = TypeParam;
+  if constexpr (!std::same_as<Scalar, float>) {  // float's range holds no result of a hinge at 2^+-300
+    // theta is invariant under x -> 2^k x, grad theta scales by 2^-k and Hess theta by 2^-2k
+    // (proofs/invariance.md). The built-in types and dd and qd (double's exponent range) rescale their
+    // edges by a power of two; the others' ranges hold every intermediate, where scaling by a power of
+    // two changes no rounding: the results are exactly those of the unscaled hinge, scaled.
+    for (const auto& x : test::well_shaped_hinges(10, 15)) {
+      const auto d = evaluate<Scalar>(x);
+      for (int k : {-450, -300, 300, 450}) {
+        std::array<double, 12> y;
+        for (int i = 0; i < 12; ++i) y[i] = std::ldexp(x[i], k);
+        const auto t = evaluate<Scalar>(y);
+        using std::ldexp;
+        ASSERT_TRUE(t.angle.theta == d.angle.theta) << k << " " << test::describe(x);
+        for (int i = 0; i < 12; ++i) ASSERT_TRUE(t.grad[i] == ldexp(d.grad[i], -k)) << k << " " << i;
+        for (int i = 0; i < 144; ++i) ASSERT_TRUE(t.hess.data()[i] == ldexp(d.hess.data()[i], -2 * k)) << k << " " << i;
+      }
+    }
+  }
+}
+
 TYPED_TEST(ScalarTypes, HessianIsExactlySymmetric) {
   for (const auto& x : test::well_shaped_hinges(50, 12)) {
     const auto d = evaluate<TypeParam>(x);

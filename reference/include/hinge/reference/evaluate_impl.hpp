@@ -2,6 +2,9 @@
 // the explicit-instantiation units (src/instantiate_*.cpp) and by users instantiating other scalars.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "hinge/reference/errors.hpp"
@@ -39,6 +42,29 @@ PreparedHinge<Scalar> prepare_hinge(const std::array<double, 12>& x) {
       return d;
     };
     p.stencil = round_to<Scalar>(make_stencil(HingeEdges<Wide>{diff(2, 1), diff(0, 2), diff(1, 0), diff(3, 2), diff(1, 3)}));
+  } else if constexpr (QdScalar<Scalar>) {
+    // QD's types have double's exponent range: the edges are brought by a power of two to a largest
+    // component in [1, 2), exactly (as for the built-in types; QD's atan2 fails on the infinities and
+    // zeros that unscaled products of far-from-unit edges give). A difference that overflows is formed
+    // from the quartered coordinates.
+    HingeEdges<Scalar> e = hinge_edges<Scalar>(x);
+    double largest = 0;
+    for (const Vec3<Scalar>* v : {&e.e0, &e.e1, &e.e2, &e.et1, &e.et2})
+      for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(to_double((*v)[c])));
+    if (!(largest <= std::numeric_limits<double>::max())) {
+      std::array<double, 12> quarter;
+      for (int i = 0; i < 12; ++i) quarter[i] = x[i] * 0x1p-4;
+      e = hinge_edges<Scalar>(quarter);
+      largest = 0;
+      for (const Vec3<Scalar>* v : {&e.e0, &e.e1, &e.e2, &e.et1, &e.et2})
+        for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(to_double((*v)[c])));
+      p.exponent = 4;
+    }
+    const int shift = std::ilogb(largest);
+    for (Vec3<Scalar>* v : {&e.e0, &e.e1, &e.e2, &e.et1, &e.et2})
+      for (int c = 0; c < 3; ++c) (*v)[c] = ldexp((*v)[c], -shift);
+    p.exponent += shift;
+    p.stencil = make_stencil(e);
   } else {
     p.stencil = make_stencil(hinge_edges<Scalar>(x));
   }
