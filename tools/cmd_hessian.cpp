@@ -25,13 +25,13 @@ Action add_hessian(CLI::App& app) {
     const methods::Method method = methods::parse_method(o->method);
     return run_mesh_command("hessian", [&] {
       const MeshJob job = load_mesh_job(o->mesh);
-      reference::RoundedMesh result;
+      methods::MeshEvaluator evaluator(method, scalar, job.input());  // Algorithm 1 and the pattern, once
       Progress progress("hinge hessian: evaluations", static_cast<std::size_t>(o->mesh.repeat));
       for (int r = 0; r < o->mesh.repeat; ++r) {
-        result = methods::evaluate_mesh(method, scalar, job.input());
+        evaluator.evaluate(r + 1 == o->mesh.repeat);
         progress.update(static_cast<std::size_t>(r + 1));
       }
-      return write_mesh_outputs(o->mesh, result);
+      return write_mesh_outputs(o->mesh, evaluator.take_result());
     });
   };
 }

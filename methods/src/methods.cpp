@@ -3,9 +3,9 @@
 
 #include <stdexcept>
 
-#include "baselines.hpp"
 #include "hinge/fast/rounded.hpp"
 #include "hinge/reference/rounded.hpp"
+#include "per_scalar.hpp"
 
 namespace hinge::methods {
 
@@ -49,17 +49,27 @@ reference::RoundedTheta evaluate_hinge(Method method, const ScalarType& scalar, 
   throw std::invalid_argument("evaluate_hinge: unknown method");
 }
 
+MeshEvaluator::MeshEvaluator(Method method, const ScalarType& scalar, const MeshInput& input)
+    : scalar_(scalar),
+      impl_(visit_scalar_type(scalar, [&]<class Scalar>() { return detail::make_evaluator<Scalar>(method, input); })) {}
+MeshEvaluator::~MeshEvaluator() = default;
+MeshEvaluator::MeshEvaluator(MeshEvaluator&&) noexcept = default;
+MeshEvaluator& MeshEvaluator::operator=(MeshEvaluator&&) noexcept = default;
+
+void MeshEvaluator::evaluate(bool last) {
+  if (scalar_.kind == ScalarType::Kind::kind_mpfr) set_mpfr_bits(scalar_.mpfr_bits);
+  impl_->evaluate(last);
+}
+
+reference::RoundedMesh MeshEvaluator::take_result() {
+  if (scalar_.kind == ScalarType::Kind::kind_mpfr) set_mpfr_bits(scalar_.mpfr_bits);
+  return impl_->take_result();
+}
+
 reference::RoundedMesh evaluate_mesh(Method method, const ScalarType& scalar, const MeshInput& in) {
-  switch (method) {
-    case Method::reference:
-      return reference::assemble_rounded(scalar, *in.deformed, *in.rest, *in.topology, in.parameters, in.request);
-    case Method::fast:
-      return fast::assemble_rounded(scalar, *in.deformed, *in.rest, *in.topology, in.parameters, in.request, in.threads);
-    case Method::autodiff:
-    case Method::symbolic:
-      return visit_scalar_type(scalar, [&]<class Scalar>() { return detail::baseline_mesh<Scalar>(method, in); });
-  }
-  throw std::invalid_argument("evaluate_mesh: unknown method");
+  MeshEvaluator evaluator(method, scalar, in);
+  evaluator.evaluate(true);
+  return evaluator.take_result();
 }
 
 }  // namespace hinge::methods

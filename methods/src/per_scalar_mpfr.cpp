@@ -1,4 +1,4 @@
-// The baseline methods (src/baselines.hpp) for mpfr.
-#include "baselines_impl.hpp"
+// hinge::methods per scalar type (src/per_scalar.hpp) for mpfr.
+#include "per_scalar_impl.hpp"
 
-HINGE_METHODS_BASELINE_INSTANTIATE(hinge::mpfr)
+HINGE_METHODS_PER_SCALAR_INSTANTIATE(hinge::mpfr)

@@ -1,5 +1,5 @@
-// The baseline methods (src/baselines.hpp) for QD's dd and qd.
-#include "baselines_impl.hpp"
+// hinge::methods per scalar type (src/per_scalar.hpp) for QD's dd and qd.
+#include "per_scalar_impl.hpp"
 
-HINGE_METHODS_BASELINE_INSTANTIATE(hinge::dd)
-HINGE_METHODS_BASELINE_INSTANTIATE(hinge::qd)
+HINGE_METHODS_PER_SCALAR_INSTANTIATE(hinge::dd)
+HINGE_METHODS_PER_SCALAR_INSTANTIATE(hinge::qd)

@@ -1,5 +1,5 @@
-// The baseline methods (src/baselines.hpp) for float128 and bin128.
-#include "baselines_impl.hpp"
+// hinge::methods per scalar type (src/per_scalar.hpp) for float128 and bin128.
+#include "per_scalar_impl.hpp"
 
-HINGE_METHODS_BASELINE_INSTANTIATE(hinge::float128)
-HINGE_METHODS_BASELINE_INSTANTIATE(hinge::bin128)
+HINGE_METHODS_PER_SCALAR_INSTANTIATE(hinge::float128)
+HINGE_METHODS_PER_SCALAR_INSTANTIATE(hinge::bin128)

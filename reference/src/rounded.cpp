@@ -2,7 +2,9 @@
 // templates are instantiated elsewhere (instantiate_*.cpp); this unit only converts.
 #include "hinge/reference/rounded.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <string>
 
 #include "hinge/reference/errors.hpp"
@@ -20,23 +22,32 @@ RoundedTheta theta_in(const std::array<double, 12>& x) {
 }  // namespace
 
 template <HingeScalar Scalar>
-RoundedMesh round_mesh(const MeshDerivatives<Scalar>& m, unsigned request) {
+RoundedMesh round_mesh(MeshDerivatives<Scalar>&& m, unsigned request) {
   RoundedMesh r;
   r.energy = rounded_to_double(m.energy, "the energy");
   r.gradient.resize(static_cast<std::size_t>(m.gradient.size()));
   for (Eigen::Index i = 0; i < m.gradient.size(); ++i) r.gradient[i] = rounded_to_double(m.gradient[i], "the gradient");
+  m.gradient.resize(0);
   if (request & want_hessian) {
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(static_cast<std::size_t>(m.hessian.nonZeros()));
-    for (Eigen::Index c = 0; c < m.hessian.outerSize(); ++c)
-      for (typename Eigen::SparseMatrix<Scalar>::InnerIterator it(m.hessian, c); it; ++it)
-        t.emplace_back(it.row(), it.col(), rounded_to_double(it.value(), "the Hessian"));
-    r.hessian.resize(m.hessian.rows(), m.hessian.cols());
-    r.hessian.setFromTriplets(t.begin(), t.end());
+    m.hessian.makeCompressed();
+    if constexpr (std::is_same_v<Scalar, double>) {
+      const double* v = m.hessian.valuePtr();
+      for (Eigen::Index i = 0; i < m.hessian.nonZeros(); ++i) rounded_to_double(v[i], "the Hessian");
+      r.hessian.swap(m.hessian);  // no copy
+    } else {
+      Eigen::SparseMatrix<double> h(m.hessian.rows(), m.hessian.cols());
+      h.resizeNonZeros(m.hessian.nonZeros());
+      std::copy(m.hessian.outerIndexPtr(), m.hessian.outerIndexPtr() + m.hessian.outerSize() + 1, h.outerIndexPtr());
+      std::copy(m.hessian.innerIndexPtr(), m.hessian.innerIndexPtr() + m.hessian.nonZeros(), h.innerIndexPtr());
+      for (Eigen::Index i = 0; i < m.hessian.nonZeros(); ++i)
+        h.valuePtr()[i] = rounded_to_double(m.hessian.valuePtr()[i], "the Hessian");
+      r.hessian.swap(h);
+    }
   }
+  r.hessian.markAsRValue();
   return r;
 }
-#define HINGE_ROUND_MESH_INSTANTIATE(S) template RoundedMesh round_mesh<S>(const MeshDerivatives<S>&, unsigned);
+#define HINGE_ROUND_MESH_INSTANTIATE(S) template RoundedMesh round_mesh<S>(MeshDerivatives<S>&&, unsigned);
 HINGE_FOR_EACH_SCALAR(HINGE_ROUND_MESH_INSTANTIATE)
 #undef HINGE_ROUND_MESH_INSTANTIATE
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,8 +45,36 @@ struct MeshInput {
   unsigned request = reference::want_all;
   int threads = 1;  // hinge::fast only; never changes an output bit
 };
-// Algorithm 1 on the rest mesh, then the energy, gradient and Hessian of the deformed one, rounded to
-// double. Throws as evaluate_hinge, naming the hinge.
+
+namespace detail {
+struct EvaluatorImpl;
+}  // namespace detail
+
+// A mesh evaluation prepared once and run any number of times (`hinge hessian --repeat`, the study's mesh
+// level): the constructor runs Algorithm 1 on the rest mesh (and for fast builds the Hessian's pattern
+// and the work arrays); evaluate() computes what input.request asks, kept in the scalar type;
+// take_result() rounds the last evaluation to double. The meshes and topology of `input` must outlive it.
+// Constructor and evaluate() throw as evaluate_hinge does, naming the hinge.
+class MeshEvaluator {
+ public:
+  MeshEvaluator(Method method, const ScalarType& scalar, const MeshInput& input);
+  ~MeshEvaluator();
+  MeshEvaluator(MeshEvaluator&&) noexcept;
+  MeshEvaluator& operator=(MeshEvaluator&&) noexcept;
+
+  // One evaluation. `last`: none follows, so the per-hinge constants and (fast) the pattern may be freed as
+  // soon as they have served, which lowers the peak memory; evaluate() may not be called again.
+  void evaluate(bool last = false);
+  // The last evaluation rounded to double, moved out (once per evaluation; see reference::round_mesh on
+  // assigning it). Throws DomainError for a result outside the range of double.
+  reference::RoundedMesh take_result();
+
+ private:
+  ScalarType scalar_;  // mpfr's precision is set again before each call (it is a global setting)
+  std::unique_ptr<detail::EvaluatorImpl> impl_;
+};
+
+// One evaluation: MeshEvaluator(method, scalar, input), evaluate(true), take_result().
 reference::RoundedMesh evaluate_mesh(Method method, const ScalarType& scalar, const MeshInput& input);
 
 }  // namespace hinge::methods

@@ -39,11 +39,13 @@ RoundedTheta round_theta(const Scalar& theta, const Grad& grad, const Hess& hess
 // (degenerate or non-finite input) or DomainError (a result outside the range of double).
 RoundedTheta theta_derivatives_rounded(const ScalarType& type, const std::array<double, 12>& x);
 
-// A mesh evaluation in Scalar rounded to double (the Hessian if `request` asks for it). Throws DomainError
-// for a result outside the range of double.
+// A mesh evaluation in Scalar rounded to double (the Hessian if `request` asks for it), consuming it: for
+// double the Hessian is moved, not copied, and marked as an Eigen rvalue, so that assigning the result to
+// another RoundedMesh swaps the matrix in (Eigen 3.4's SparseMatrix has no move assignment): assign or use
+// the result, do not copy it. Throws DomainError for a result outside the range of double.
 template <HingeScalar Scalar>
-RoundedMesh round_mesh(const MeshDerivatives<Scalar>& m, unsigned request);
-#define HINGE_ROUND_MESH_EXTERN(S) extern template RoundedMesh round_mesh<S>(const MeshDerivatives<S>&, unsigned);
+RoundedMesh round_mesh(MeshDerivatives<Scalar>&& m, unsigned request);
+#define HINGE_ROUND_MESH_EXTERN(S) extern template RoundedMesh round_mesh<S>(MeshDerivatives<S>&&, unsigned);
 HINGE_FOR_EACH_SCALAR(HINGE_ROUND_MESH_EXTERN)
 #undef HINGE_ROUND_MESH_EXTERN
 
