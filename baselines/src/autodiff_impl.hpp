@@ -5,11 +5,36 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include <limits>
+
 #include "common.hpp"
 #include "hinge/baselines/autodiff.hpp"
 
 namespace hinge::baselines {
 namespace detail {
+
+// The value of a (nested) AutoDiffScalar: what its atan2 passes to the scalar type's.
+template <class T>
+auto value_of(const T& t) {
+  if constexpr (HingeScalar<T>) return t;
+  else return value_of(t.value());
+}
+
+// t times 2^e, value and derivatives (exact).
+template <class T>
+T scaled(const T& t, int e) {
+  if constexpr (HingeScalar<T>) {
+    return ldexp(t, e);
+  } else {
+    T r = t;
+    r.value() = scaled(t.value(), e);
+    for (Eigen::Index i = 0; i < t.derivatives().size(); ++i) r.derivatives()[i] = scaled(t.derivatives()[i], e);
+    return r;
+  }
+}
+
+// Thrown where atan2 is undefined in a QD type (common.hpp): the results are NaN.
+struct NotANumber {};
 
 // theta of the hinge p (x0.x, ..., x3.z) in any T: the atan2 definition of docs/contract.md, as written.
 // (Dot and cross products spelled out: Eigen's reductions construct T from an int, which the nested
@@ -27,7 +52,13 @@ T theta_of(const std::array<T, 12>& p) {
   const V Nt = cross(sub(2, 3), sub(1, 3));
   using std::atan2;
   using std::sqrt;
-  return atan2(dot(cross(N, Nt), e0) / sqrt(dot(e0, e0)), dot(N, Nt));
+  const T y = dot(cross(N, Nt), e0) / sqrt(dot(e0, e0)), x = dot(N, Nt);
+  if constexpr (QdScalar<decltype(value_of(y))>) {  // QD's atan2 needs its arguments near 1 (common.hpp)
+    const std::optional<int> e = qd_atan2_exponent(value_of(y), value_of(x));
+    if (!e) throw NotANumber{};
+    return atan2(scaled(y, -*e), scaled(x, -*e));
+  }
+  return atan2(y, x);
 }
 
 }  // namespace detail
@@ -39,30 +70,38 @@ Derivatives<Scalar> autodiff_derivatives(const std::array<double, 12>& x, Output
   d.grad.setZero();
   d.hess.setZero();
   using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<Scalar, 12, 1>>;
-  switch (outputs) {
-    case Outputs::theta: d.theta = detail::theta_of(s); break;
-    case Outputs::gradient: {
-      std::array<Inner, 12> p;
-      for (int i = 0; i < 12; ++i) p[i] = Inner(s[i], 12, i);  // value s[i], derivative the i-th unit vector
-      const Inner t = detail::theta_of(p);
-      d.theta = t.value();
-      d.grad = t.derivatives();
-      break;
-    }
-    case Outputs::hessian: {
-      using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, 12, 1>>;
-      std::array<Outer, 12> p;
-      for (int i = 0; i < 12; ++i) {
-        p[i].value() = Inner(s[i], 12, i);
-        p[i].derivatives() = Eigen::Matrix<Inner, 12, 1>::Unit(12, i);
-        for (int j = 0; j < 12; ++j) p[i].derivatives()[j].derivatives().setZero();
+  try {
+    switch (outputs) {
+      case Outputs::theta: d.theta = detail::theta_of(s); break;
+      case Outputs::gradient: {
+        std::array<Inner, 12> p;
+        for (int i = 0; i < 12; ++i) p[i] = Inner(s[i], 12, i);  // value s[i], derivative the i-th unit vector
+        const Inner t = detail::theta_of(p);
+        d.theta = t.value();
+        d.grad = t.derivatives();
+        break;
       }
-      const Outer t = detail::theta_of(p);
-      d.theta = t.value().value();
-      d.grad = t.value().derivatives();
-      for (int i = 0; i < 12; ++i) d.hess.row(i) = t.derivatives()[i].derivatives().transpose();
-      break;
+      case Outputs::hessian: {
+        using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, 12, 1>>;
+        std::array<Outer, 12> p;
+        for (int i = 0; i < 12; ++i) {
+          p[i].value() = Inner(s[i], 12, i);
+          p[i].derivatives() = Eigen::Matrix<Inner, 12, 1>::Unit(12, i);
+          for (int j = 0; j < 12; ++j) p[i].derivatives()[j].derivatives().setZero();
+        }
+        const Outer t = detail::theta_of(p);
+        d.theta = t.value().value();
+        d.grad = t.value().derivatives();
+        for (int i = 0; i < 12; ++i) d.hess.row(i) = t.derivatives()[i].derivatives().transpose();
+        break;
+      }
     }
+  } catch (const detail::NotANumber&) {
+    const Scalar nan(std::numeric_limits<double>::quiet_NaN());
+    d.theta = nan;
+    d.grad.setConstant(nan);
+    if (outputs == Outputs::hessian) d.hess.setConstant(nan);
+    return d;
   }
   d.theta = detail::on_branch(d.theta);
   return d;

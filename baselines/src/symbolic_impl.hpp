@@ -8,8 +8,22 @@
 
 namespace hinge::baselines {
 namespace generated {
-using hinge::atan2;  // the built-in types' std:: functions; the others' are found by argument-dependent lookup
-using hinge::sqrt;
+using hinge::sqrt;  // the built-in types' std:: functions; the others' are found by argument-dependent lookup
+
+// atan2 as the generated code calls it: the scalar type's (for QD's, its arguments brought near 1 by a
+// power of two first, or NaN where it is undefined: common.hpp).
+template <class S>
+S theta_atan2(const S& y, const S& x) {
+  if constexpr (QdScalar<S>) {
+    const std::optional<int> e = detail::qd_atan2_exponent(y, x);
+    if (!e) return S(std::numeric_limits<double>::quiet_NaN());
+    return atan2(ldexp(y, -*e), ldexp(x, -*e));
+  } else {
+    using std::atan2;
+    return atan2(y, x);
+  }
+}
+
 #include "symbolic_theta.inc"
 }  // namespace generated
 

@@ -119,6 +119,23 @@ TYPED_TEST(Baselines, OutputLevelsGiveTheSameValues) {
   }
 }
 
+TYPED_TEST(Baselines, FarFromUnitSizeTheyGiveNumbersOrNaNAndNeverCrash) {
+  using Scalar = TypeParam;
+  // The baselines do not rescale: at 2^+-300 their intermediates (up to l^16) overflow or underflow in the
+  // types with double's exponent range, and the results are NaN or infinite (what the study counts as
+  // non-finite). They must not crash: QD's atan2 does on a NaN argument (common.hpp guards it), and what
+  // the guard lets through lies in atan2's range.
+  for (const auto& x : test::well_shaped_hinges(5, 26))
+    for (int k : {-500, -300, 300, 500}) {
+      std::array<double, 12> y;
+      for (int i = 0; i < 12; ++i) y[i] = std::ldexp(x[i], k);
+      for (const bool symbolic : {false, true}) {
+        const double theta = to_double(evaluate<Scalar>(symbolic, y).theta);
+        EXPECT_TRUE(std::isnan(theta) || std::abs(theta) <= to_double(pi_of<Scalar>())) << k << " " << theta;
+      }
+    }
+}
+
 TYPED_TEST(Baselines, DegenerateHingesAreInputErrors) {
   using Scalar = TypeParam;
   std::array<double, 12> x = test::flat_hinge();
