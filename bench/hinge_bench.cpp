@@ -30,6 +30,7 @@
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "hinge/reference/samples.hpp"
+#include "hinge/study/measure.hpp"
 
 namespace hinge::bench {
 namespace {
@@ -170,42 +171,10 @@ class Capture : public benchmark::ConsoleReporter {
 };
 
 // Least-squares slope of log t against log n.
-double fitted_exponent(const std::vector<std::pair<double, double>>& points) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const auto& [n, t] : points) {
-    const double x = std::log(n), y = std::log(t);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  const double m = static_cast<double>(points.size());
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
+double fitted_exponent(const std::vector<std::pair<double, double>>& points) { return hinge::study::fit_power_law(points).k; }
 
 std::string mesh_name(const char* method, int n, int threads) {
   return std::string("mesh/") + method + "/n:" + std::to_string(n) + "/threads:" + std::to_string(threads) + "/real_time";
-}
-
-// The processor's clock (GHz) as a chain of dependent one-cycle additions measures it, the median of five
-// runs of 0.1 s (x86-64 with GCC or Clang; 0 elsewhere). This machine's clock moves between about 3.1 and
-// 4.3 GHz from hour to hour, and every time in ns with it: cycles compare across runs, ns do not.
-double clock_ghz() {
-#if defined(__x86_64__) && defined(__GNUC__)
-  constexpr std::uint64_t kRounds = 100'000'000;  // four additions each
-  std::vector<double> ghz;
-  for (int r = 0; r < 5; ++r) {
-    std::uint64_t x = 0;
-    const auto start = std::chrono::steady_clock::now();
-    for (std::uint64_t i = 0; i < kRounds; ++i) asm volatile("add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0" : "+r"(x));
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ghz.push_back(4e-9 * double(kRounds) / seconds);
-  }
-  std::sort(ghz.begin(), ghz.end());
-  return ghz[2];
-#else
-  return 0;
-#endif
 }
 
 void summary(const Capture& c, const std::vector<int>& sides, double ghz_before, double ghz_after) {
@@ -298,10 +267,10 @@ int main(int argc, char** argv) {
   argv = args.data();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  const double ghz_before = clock_ghz();
+  const double ghz_before = hinge::study::clock_ghz();
   Capture capture;
   benchmark::RunSpecifiedBenchmarks(&capture);
-  summary(capture, sides, ghz_before, clock_ghz());
+  summary(capture, sides, ghz_before, hinge::study::clock_ghz());
   benchmark::Shutdown();
   return 0;
 }

@@ -15,7 +15,8 @@ packages=(
   libbenchmark-dev              # benchmarks
   nlohmann-json3-dev            # JSON Lines input and output
   libcli11-dev                  # command-line parsing
-  python3-sympy                 # symbolic checks in proofs/
+  python3-sympy                 # symbolic checks in proofs/, the symbolic method's code generator
+  python3-matplotlib            # hinge study's plots (study/plot_study.py)
 )
 
 missing=()

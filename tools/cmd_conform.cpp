@@ -2,6 +2,7 @@
 //   hinge conform --inputs [--output FILE]                       the conformance inputs {"id", "category", "x"}
 //   hinge conform --candidate FILE                               outputs in the hinge eval format, same ids
 //   hinge conform --plugin LIB.so [--symbol NAME] [--save FILE]  a C function (hinge/candidate.h)
+//   hinge conform --method M [--scalar S] [--save FILE]          one of hinge eval's methods, in process
 //   hinge conform --mesh X.obj [--rest R.obj] --energy E --k K --hessian H.mtx [--gradient G.txt]
 //   hinge conform --write-vectors DIR                            regenerate conformance/ (bit for bit)
 // Exit status: 0 within the tolerance policy everywhere, 1 not, 2 usage error or unreadable candidate.
@@ -20,6 +21,7 @@
 #include "hinge/io/matrix_market.hpp"
 #include "hinge/io/number.hpp"
 #include "hinge/io/obj.hpp"
+#include "hinge/methods/methods.hpp"
 #include "hinge/oracle/conformance.hpp"
 #include "hinge/oracle/plugin.hpp"
 #include "hinge/reference/errors.hpp"
@@ -33,7 +35,7 @@ namespace conf = oracle::conformance;
 
 struct ConformOptions {
   bool inputs = false, verbose = false;
-  std::string output, candidate, plugin, symbol = "hinge_candidate", save, write_vectors;
+  std::string output, candidate, plugin, symbol = "hinge_candidate", save, write_vectors, method, scalar = "double";
   std::vector<std::string> categories;
   conf::Policy policy;
   // mesh mode
@@ -72,14 +74,39 @@ void print_cases(std::ostream& out, const std::vector<conf::CaseOutcome>& outcom
   out << '\n';
 }
 
+// One of our own methods as a candidate: its results rounded to double, an error line where it cannot
+// evaluate a hinge (what `hinge eval` would print).
+conf::CandidateResult method_result(methods::Method method, const ScalarType& scalar, const std::array<double, 12>& x) {
+  conf::CandidateResult r;
+  try {
+    const reference::RoundedTheta t = methods::evaluate_hinge(method, scalar, x);
+    r.status = conf::CandidateResult::Status::ok;
+    r.theta = t.theta;
+    r.grad = t.grad;
+    r.hess = t.hess;
+    io::check_finite(r);
+  } catch (const InputError& e) {
+    r.status = conf::CandidateResult::Status::error;
+    r.error = e.what();
+  } catch (const DomainError& e) {
+    r.status = conf::CandidateResult::Status::error;
+    r.error = e.what();
+  }
+  return r;
+}
+
 int run_cases(const ConformOptions& o) {
   std::optional<conf::Plugin> plugin;
+  std::optional<std::pair<methods::Method, ScalarType>> method;
   std::map<std::string, conf::CandidateResult> file;
   std::string name;
   try {
     if (!o.candidate.empty()) {
       file = io::read_eval_outputs(o.candidate);
       name = "candidate " + o.candidate;
+    } else if (!o.method.empty()) {
+      method.emplace(methods::parse_method(o.method), parse_scalar_type(o.scalar));  // std::invalid_argument: usage
+      name = "hinge eval --method " + o.method + " --scalar " + o.scalar;
     } else {
       plugin.emplace(o.plugin, o.symbol);
       name = "plugin " + o.plugin + " (" + o.symbol + ")";
@@ -101,6 +128,8 @@ int run_cases(const ConformOptions& o) {
     conf::CandidateResult r;
     if (plugin) {
       r = (*plugin)(c.x);
+    } else if (method) {
+      r = method_result(method->first, method->second, c.x);
     } else if (auto it = file.find(c.id); it != file.end()) {
       r = it->second;
       --unknown;
@@ -110,7 +139,7 @@ int run_cases(const ConformOptions& o) {
     progress.update(outcomes.size());
   }
   if (saved) saved->commit();
-  if (!plugin && unknown > 0 && o.categories.empty())
+  if (!o.candidate.empty() && unknown > 0 && o.categories.empty())
     std::cerr << "hinge conform: " << unknown << " line(s) of the candidate have ids that are not conformance cases (ignored)\n";
   if (o.verbose) print_cases(std::cout, outcomes);
   const bool pass = conf::print_report(std::cout, outcomes, o.policy, name);
@@ -193,6 +222,13 @@ int write_vectors(const ConformOptions& o) {
 
 }  // namespace
 
+int conform_method(const std::string& method, const std::string& scalar) {
+  ConformOptions o;
+  o.method = method;
+  o.scalar = scalar;
+  return run_cases(o);
+}
+
 Action add_conform(CLI::App& app) {
   auto* cmd = app.add_subcommand("conform", "Check another implementation against certified values");
   auto o = std::make_shared<ConformOptions>();
@@ -201,7 +237,9 @@ Action add_conform(CLI::App& app) {
   cmd->add_option("--candidate", o->candidate, "Check outputs in the hinge eval format (same ids as --inputs)");
   cmd->add_option("--plugin", o->plugin, "Check a shared library exporting the C function of hinge/candidate.h");
   cmd->add_option("--symbol", o->symbol, "The plugin's function")->capture_default_str();
-  cmd->add_option("--save", o->save, "With --plugin: also write its outputs in the hinge eval format");
+  cmd->add_option("--method", o->method, "Check one of hinge eval's methods: reference, fast, autodiff, symbolic");
+  cmd->add_option("--scalar", o->scalar, "With --method: its scalar type")->capture_default_str();
+  cmd->add_option("--save", o->save, "With --plugin or --method: also write its outputs in the hinge eval format");
   cmd->add_option("--category", o->categories, "Only these categories (repeatable)");
   cmd->add_flag("--verbose", o->verbose, "Also print every case's errors and tolerances");
   cmd->add_option("--tolerance-base", o->policy.base, "Tolerance policy: units of 2^-53 granted to every case")
@@ -220,14 +258,14 @@ Action add_conform(CLI::App& app) {
       "output's error is at most base + c kappa (docs/conformance.md). Exit: 0 pass, 1 fail, 2 usage error or\n"
       "unreadable candidate.");
   return [o]() -> int {
-    const int modes = int(o->inputs) + int(!o->candidate.empty()) + int(!o->plugin.empty()) +
+    const int modes = int(o->inputs) + int(!o->candidate.empty()) + int(!o->plugin.empty()) + int(!o->method.empty()) +
                       int(!o->write_vectors.empty()) + int(!o->mesh.empty());
     if (modes != 1) {
-      std::cerr << "hinge conform: give exactly one of --inputs, --candidate, --plugin, --mesh, --write-vectors\n";
+      std::cerr << "hinge conform: give exactly one of --inputs, --candidate, --plugin, --method, --mesh, --write-vectors\n";
       return exit_usage;
     }
-    if (!o->save.empty() && o->plugin.empty()) {
-      std::cerr << "hinge conform: --save goes with --plugin\n";
+    if (!o->save.empty() && o->plugin.empty() && o->method.empty()) {
+      std::cerr << "hinge conform: --save goes with --plugin or --method\n";
       return exit_usage;
     }
     try {

@@ -5,6 +5,9 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+
+#include "hinge/study/study.hpp"
 
 namespace hinge::tools {
 
@@ -16,7 +19,14 @@ Action add_oracle(CLI::App& app);   // hinge oracle (hinges, or --mesh)
 Action add_hessian(CLI::App& app);  // hinge hessian
 Action add_demo(CLI::App& app);     // hinge demo: the main job on built-in defaults
 Action add_conform(CLI::App& app);  // hinge conform: check another implementation
+Action add_study(CLI::App& app);    // hinge study: what accuracy costs in time
 
 constexpr int exit_done = 0, exit_invalid_input = 1, exit_usage = 2;
+
+// The work of `hinge study` after parsing (cmd_study.cpp): runs the study, writes DIR/study.json and
+// DIR/study.md, renders the plots (unless `plots` is false), prints the summary. Returns the exit status.
+int run_study(const study::Options& options, const std::string& out, bool plots);
+// `hinge conform --method M --scalar S` (cmd_conform.cpp): prints the report, returns the exit status.
+int conform_method(const std::string& method, const std::string& scalar);
 
 }  // namespace hinge::tools

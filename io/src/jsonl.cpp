@@ -72,6 +72,7 @@ HingeLine parse_hinge_line(const std::string& text, long line_number) {
     h.error = "missing \"id\"";
     return h;
   }
+  if (auto c = j.find("category"); c != j.end() && c->is_string()) h.category = c->get<std::string>();
   auto x = j.find("x");
   if (x == j.end()) {
     h.error = "missing \"x\"";

@@ -29,7 +29,7 @@ def test_version_names_the_contract():
 
 
 def test_every_command_has_help():
-    for cmd in ["eval", "oracle", "hessian", "conform", "demo"]:
+    for cmd in ["eval", "oracle", "hessian", "conform", "study", "demo"]:
         code, out, _ = run([cmd, "--help"])
         assert code == 0 and "--" in out, (cmd, code)
 

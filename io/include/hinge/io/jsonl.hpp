@@ -18,6 +18,7 @@ struct HingeLine {
   std::string id_json;       // the id as JSON text ("null" if it could not be read)
   std::optional<std::array<double, 12>> x;  // absent when the line is not valid input
   std::string error;         // why the line is not valid input
+  std::string category;      // the line's "category" string, if it has one (hinge study groups by it)
 };
 
 // Parses one non-blank input line. Numbers are read correctly rounded (nlohmann::json uses strtod).

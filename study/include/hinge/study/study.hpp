@@ -1,0 +1,122 @@
+// hinge/study/study.hpp: what accuracy costs in time (docs/contract.md, `hinge study`; docs/study.md).
+// Every method (hinge::methods: reference, fast, autodiff, symbolic) in every scalar type is timed on the
+// three output groups (theta; theta and gradient; all three) and its errors are measured against the
+// certified oracle, per category of hinges; the mesh level times whole evaluations per interior edge on
+// the paper's cloth sizes and fits t = a n^k (the paper's Table 2 and Fig. 7).
+//
+// Error measures (FPBench's vocabulary): forward errors, normwise per output group, sound (against
+// certified values): ||f - f*||_2 / ||f*||_2 in units of 2^-53, f* the certified outputs (each the double
+// nearest the exact value), f the method's outputs rounded to double; median and maximum over a category,
+// also as bits, log2(1 + max). Where f* is exactly zero (theta on a flat hinge) the error is relative to
+// the output's scale L ||J_f||_F instead (the conformance policy's scale: L the longest edge, J_f the
+// output's Jacobian, from the certified derivatives). Types wider than double also get error_own: the same
+// normwise error of the unrounded outputs against the reference evaluated in MPFR at max(2p + 32, p + 100)
+// bits (p the type's precision), in units of the type's own unit roundoff 2^-p.
+//
+// Times: ns per hinge, the median over passes of one pass over the timing hinges, one thread; a pass
+// times one output group, and the groups take turns so that the host's drift touches them alike.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "hinge/methods/methods.hpp"
+#include "hinge/reference/scalar.hpp"
+
+namespace hinge::study {
+
+// One hinge of the study: its id and category (built-in: the conformance categories; --input: the line's
+// "category", default "input").
+struct StudyHinge {
+  std::string id, category;
+  std::array<double, 12> x{};
+};
+
+// Progress: the stage ("certifying", "rows", "mesh"), and how far it has come.
+using ProgressFn = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+
+struct Options {
+  bool quick = false;                    // the quick study (docs/study.md says what it holds)
+  std::vector<StudyHinge> hinges;        // empty: the built-in hinges
+  std::string source = "built-in";       // the input file's name, for study.json
+  std::vector<methods::Method> methods;  // empty: all four
+  std::vector<ScalarType> scalars;       // empty: default_scalars(quick)
+  bool mesh = true;                      // the mesh level
+  double budget_seconds = 0;             // per row and per mesh row; 0: the default (quick 1.5 s, full 20 s)
+  ProgressFn progress;
+};
+
+// The scalar types studied by default: float, double, long-double, dd, qd, float128, bin128, mpfr:128,
+// mpfr:256 (and mpfr:512 in the full study).
+std::vector<ScalarType> default_scalars(bool quick);
+
+// The built-in hinges: the conformance inputs (hinge::oracle::conformance::inputs(): well-shaped,
+// rotations, scales, offsets, near-flat, near-folded, needles, short-hinge-edges, boundary-meshes), and in
+// the full study 2000 more seeded well-shaped hinges (category well-shaped).
+std::vector<StudyHinge> builtin_hinges(bool quick);
+
+// The hinges of a file in the `hinge eval` input format, each line's "category" string grouping it
+// (default "input"). Throws hinge::InputError naming the file and line for an unreadable file or a line
+// that is not valid input, and for a file with no hinge at all.
+std::vector<StudyHinge> read_hinges(const std::string& path);
+
+// `count` of `hinges` drawn reproducibly (a fixed seed), in their original order (all of them when count
+// is 0 or at least their number).
+std::vector<StudyHinge> sample(const std::vector<StudyHinge>& hinges, std::size_t count);
+
+struct ErrorStats {
+  double median = 0, max = 0;  // units of 2^-53 (error_u) or of the type's own u (error_own)
+};
+using GroupErrors = std::array<ErrorStats, 3>;  // theta, grad, hess
+
+struct Row {
+  methods::Method method = methods::Method::fast;
+  ScalarType scalar;
+  std::array<double, 3> ns_per_hinge{};            // theta; theta and gradient; all three (0: not timed)
+  std::map<std::string, GroupErrors> error_u;      // per category, outputs rounded to double
+  std::map<std::string, GroupErrors> error_own;    // per category, types wider than double
+  std::vector<double> hess_errors;                 // per hinge measured (units of 2^-53), for the histogram
+  std::size_t hinges = 0;     // hinges whose errors were measured (fewer than all when the budget ran out)
+  std::size_t failed = 0;     // reported as not evaluable (an InputError or DomainError)
+  std::size_t nonfinite = 0;  // returned a NaN or an infinity, or a value outside double's range
+  double seconds = 0;         // what the row took
+  bool on_frontier = false;   // no other row is both faster (theta, gradient and Hessian) and more accurate
+  double worst_hess = 0;      // the largest Hessian error of any category (units of 2^-53)
+};
+
+struct MeshRow {
+  methods::Method method = methods::Method::fast;
+  ScalarType scalar;
+  std::vector<double> vertices, interior_edges, seconds;  // per size: n^2, hinges, seconds per evaluation
+  std::vector<double> ns_per_edge;
+  double k = 0, ln_a = 0;  // seconds per evaluation = a vertices^k, fitted in log-log (needs two sizes)
+};
+
+struct Study {
+  std::string cpu;
+  double clock_ghz = 0;
+  std::string source;
+  std::size_t hinges = 0, skipped = 0;  // skipped: input hinges the oracle rejects (degenerate, ...)
+  std::vector<std::string> categories;
+  std::vector<Row> rows;
+  std::vector<MeshRow> mesh;
+  std::vector<std::pair<std::string, std::string>> build;  // version, commit, compiler, flags, libraries
+  bool quick = false;
+  double seconds = 0;
+};
+
+// Runs the study. Throws std::invalid_argument when the methods and scalar types leave nothing to study,
+// hinge::InputError when no input hinge can be certified.
+Study run(const Options& options);
+
+// study.json (docs/contract.md), study.md (the same tables in Markdown), the summary table printed.
+void write_json(std::ostream& out, const Study& s);
+void write_markdown(std::ostream& out, const Study& s);
+void print_summary(std::ostream& out, const Study& s);
+
+}  // namespace hinge::study

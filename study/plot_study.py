@@ -1,0 +1,175 @@
+#!/usr/bin/python3
+"""Renders the plots of `hinge study` from its study.json (docs/study.md):
+
+  pareto.svg/.png     time per hinge against error, one point per method x scalar type, the frontier drawn
+  histogram.svg/.png  the distribution of Hessian errors per hinge (the paper's Fig. 6)
+  scaling.svg/.png    time per mesh evaluation against vertices, with the fitted k (Fig. 7, Table 2)
+
+Usage: plot_study.py STUDY.json OUTDIR. Needs matplotlib (Debian: python3-matplotlib). The SVG files are
+deterministic (fixed hash salt, no date), so committed plots change only when the numbers do.
+"""
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+matplotlib.rcParams["svg.hashsalt"] = "hinge-study"
+matplotlib.rcParams["font.size"] = 9
+import matplotlib.pyplot as plt  # noqa: E402
+
+FLOOR = 0.05  # errors of exactly 0 units are drawn here on the logarithmic axes
+METHODS = ["reference", "fast", "autodiff", "symbolic"]
+MARKERS = {"reference": "s", "fast": "o", "autodiff": "^", "symbolic": "D"}
+
+
+def scalar_order(name):
+    order = ["float", "double", "long-double", "dd", "float128", "bin128", "qd"]
+    if name in order:
+        return (order.index(name), 0)
+    if name.startswith("mpfr:"):
+        return (len(order), int(name.split(":")[1]))
+    return (len(order) + 1, 0)
+
+
+def colours(names):
+    cmap = plt.get_cmap("viridis")
+    names = sorted(set(names), key=scalar_order)
+    return {n: cmap(i / max(1, len(names) - 1) * 0.9) for i, n in enumerate(names)}
+
+
+def save(fig, outdir, name):
+    fig.savefig(os.path.join(outdir, name + ".svg"), metadata={"Date": None})
+    fig.savefig(os.path.join(outdir, name + ".png"), dpi=130, metadata={"Software": None})
+    plt.close(fig)
+
+
+def frontier(points):
+    """The points (t, e) no other point beats in both; sorted by time."""
+    best = []
+    for t, e, *rest in sorted(points):
+        if not best or e < best[-1][1]:
+            best.append((t, e, *rest))
+    return best
+
+
+def pareto(study, outdir):
+    rows = [r for r in study["rows"] if "hess" in r["ns_per_hinge"] and r["error_u"]]
+    colour = colours(r["scalar"] for r in rows)
+    typical = "well-shaped" if "well-shaped" in study["inputs"]["categories"] else study["inputs"]["categories"][0]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
+    panels = [
+        ("worst over all categories", lambda r: max(e["hess"]["max"] for e in r["error_u"].values())),
+        (f"median over {typical}", lambda r: r["error_u"][typical]["hess"]["median"] if typical in r["error_u"] else None),
+    ]
+    for ax, (title, error) in zip(axes, panels):
+        points = []
+        for r in rows:
+            e = error(r)
+            if e is None:
+                continue
+            failed = r["failed"] + r["nonfinite"]
+            t = r["ns_per_hinge"]["hess"]
+            ax.scatter(t, max(e, FLOOR), marker=MARKERS.get(r["method"], "x"), color=colour[r["scalar"]],
+                       edgecolors="red" if failed else "none", linewidths=1.2, s=36, zorder=3)
+            if not failed:
+                points.append((t, max(e, FLOOR), r["method"], r["scalar"]))
+        best = frontier(points)
+        if best:
+            xs, ys = [], []
+            for t, e, *_ in best:
+                if xs:
+                    xs.append(t)
+                    ys.append(ys[-1])
+                xs.append(t)
+                ys.append(e)
+            ax.plot(xs, ys, color="0.3", lw=1, zorder=2, label="frontier")
+            for t, e, m, s in best:
+                ax.annotate(f"{m}/{s}", (t, e), textcoords="offset points", xytext=(4, 4), fontsize=7)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("ns per hinge: theta, gradient and Hessian (one thread)")
+        ax.set_ylabel(f"Hessian error, units of 2^-53 (0 drawn at {FLOOR})")
+        ax.set_title(title)
+        ax.grid(True, which="major", lw=0.3)
+    handles = [plt.Line2D([], [], marker=MARKERS[m], ls="", color="0.4", label=m) for m in METHODS]
+    handles += [plt.Line2D([], [], marker="o", ls="", color=c, label=s) for s, c in colour.items()]
+    handles.append(plt.Line2D([], [], marker="o", ls="", mfc="none", mec="red", label="failed or non-finite on some hinge"))
+    fig.legend(handles=handles, loc="lower center", ncol=8, fontsize=7, frameon=False)
+    fig.suptitle(f"What accuracy costs: {study['machine']['cpu']}, {study['machine']['clock_ghz']:.2f} GHz, "
+                 f"{study['inputs']['hinges']} hinges ({study['inputs']['source']})")
+    fig.tight_layout(rect=(0, 0.08, 1, 0.95))
+    save(fig, outdir, "pareto")
+
+
+def histogram(study, outdir):
+    rows = study["rows"]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    lo, hi = math.log10(FLOOR), 16
+    bins = [lo + i * (hi - lo) / 60 for i in range(61)]
+
+    def draw(ax, selection, key, title, colour_of):
+        for r in selection:
+            errs = [math.log10(max(e, FLOOR)) for e in r["hess_errors_u"]]
+            if not errs:
+                continue
+            ax.hist(errs, bins=bins, histtype="step", lw=1.3, label=key(r), color=colour_of(r))
+        ax.set_xlabel("log10 of the Hessian's normwise error, units of 2^-53 (per hinge)")
+        ax.set_ylabel("hinges")
+        ax.set_title(title)
+        ax.legend(fontsize=7)
+
+    method_colour = {m: plt.get_cmap("tab10")(i) for i, m in enumerate(METHODS)}
+    draw(axes[0], [r for r in rows if r["scalar"] == "double"], lambda r: r["method"], "every method in double",
+         lambda r: method_colour.get(r["method"], "k"))
+    fast = [r for r in rows if r["method"] == "fast"]
+    colour = colours(r["scalar"] for r in fast)
+    draw(axes[1], sorted(fast, key=lambda r: scalar_order(r["scalar"])), lambda r: r["scalar"],
+         "fast in every scalar type, rounded to double", lambda r: colour[r["scalar"]])
+    fig.suptitle("Distribution of Hessian errors against the certified oracle (the paper's Fig. 6)")
+    fig.tight_layout()
+    save(fig, outdir, "histogram")
+
+
+def scaling(study, outdir):
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    method_colour = {m: plt.get_cmap("tab10")(i) for i, m in enumerate(METHODS)}
+    styles = ["-", "--", ":", "-."]
+    scalars = sorted({m["scalar"] for m in study["mesh"]}, key=scalar_order)
+    for m in study["mesh"]:
+        if not m["vertices"]:
+            continue
+        style = styles[scalars.index(m["scalar"]) % len(styles)]
+        label = f"{m['method']}/{m['scalar']}" + (f": k = {m['k']:.3f}" if "k" in m else "")
+        c = method_colour.get(m["method"], "k")
+        ax.plot(m["vertices"], m["seconds"], marker=MARKERS.get(m["method"], "x"), ls="", color=c, ms=4)
+        if "k" in m:
+            xs = [m["vertices"][0], m["vertices"][-1]]
+            ax.plot(xs, [math.exp(m["ln_a"]) * x ** m["k"] for x in xs], ls=style, color=c, lw=1, label=label)
+        else:
+            ax.plot([], [], ls=style, color=c, label=label)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("vertices")
+    ax.set_ylabel("seconds per evaluation: energy, gradient, Hessian (one thread)")
+    ax.set_title("Mesh evaluation time against size, fitted t = a n^k (the paper's Fig. 7)")
+    ax.grid(True, which="major", lw=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    save(fig, outdir, "scaling")
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: plot_study.py STUDY.json OUTDIR")
+    with open(sys.argv[1]) as f:
+        study = json.load(f)
+    pareto(study, sys.argv[2])
+    histogram(study, sys.argv[2])
+    scaling(study, sys.argv[2])
+
+
+if __name__ == "__main__":
+    main()

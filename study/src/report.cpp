@@ -1,0 +1,248 @@
+// study.json, study.md and the summary table (hinge/study/study.hpp), and the build's description.
+#include <gmp.h>
+#include <mpfi.h>
+#include <mpfr.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <boost/version.hpp>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include "build_info.hpp"
+#include "hinge/oracle/conformance.hpp"
+#include "study_internal.hpp"
+
+namespace hinge::study {
+
+namespace detail {
+
+std::vector<std::pair<std::string, std::string>> build_description() {
+  return {{"version", HINGE_BUILD_VERSION},
+          {"commit", HINGE_BUILD_COMMIT},
+          {"compiler", HINGE_BUILD_COMPILER},
+          {"build_type", HINGE_BUILD_TYPE},
+          {"flags", HINGE_BUILD_FLAGS},
+          {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
+                        std::to_string(EIGEN_MINOR_VERSION)},
+          {"boost", BOOST_LIB_VERSION},
+          {"mpfr", mpfr_get_version()},
+          {"gmp", gmp_version},
+          {"mpfi", mpfi_get_version()}};
+}
+
+}  // namespace detail
+
+namespace {
+
+using json = nlohmann::ordered_json;
+constexpr const char* groups[3] = {"theta", "grad", "hess"};
+
+// Bits of error: log2(1 + units), FPBench's measure (0 for an exact result, 53 for one with no correct bit).
+double bits(double units) { return std::log2(1 + units); }
+
+json group_errors(const GroupErrors& e) {
+  json j;
+  for (int g = 0; g < 3; ++g)
+    j[groups[g]] = {{"median", e[g].median}, {"max", e[g].max}, {"max_bits", bits(e[g].max)}};
+  return j;
+}
+
+std::string label(const Row& r) { return std::string(methods::method_name(r.method)) + "/" + r.scalar.name(); }
+
+// The fast kernel in double: the row every time is compared with (the first row if it is absent).
+const Row* baseline(const Study& s) {
+  for (const Row& r : s.rows)
+    if (r.method == methods::Method::fast && r.scalar.kind == ScalarType::Kind::kind_double) return &r;
+  return s.rows.empty() ? nullptr : &s.rows.front();
+}
+
+std::string fixed(double v, int digits) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+// A time in ns with 3 significant digits.
+std::string ns(double v) {
+  if (v <= 0) return "-";
+  char b[64];
+  std::snprintf(b, sizeof b, v < 10 ? "%.2f" : v < 100 ? "%.1f" : "%.0f", v);
+  return b;
+}
+
+// An error in units with 2 significant digits (or "0").
+std::string units(double v) {
+  if (v == 0) return "0";
+  char b[64];
+  std::snprintf(b, sizeof b, v >= 1e4 ? "%.1e" : v >= 10 ? "%.0f" : "%.2g", v);
+  return b;
+}
+
+}  // namespace
+
+void write_json(std::ostream& out, const Study& s) {
+  json j;
+  j["version"] = 1;
+  j["machine"] = {{"cpu", s.cpu}, {"clock_ghz", s.clock_ghz}};
+  j["inputs"] = {{"source", s.source}, {"hinges", s.hinges}, {"skipped", s.skipped}, {"categories", s.categories}};
+  j["quick"] = s.quick;
+  j["seconds"] = s.seconds;
+  json build = json::object();
+  for (const auto& [k, v] : s.build) build[k] = v;
+  j["build"] = build;
+  j["units"] = "normwise error in units of 2^-53 (error_u) or of the type's own unit roundoff (error_own)";
+  json rows = json::array();
+  for (const Row& r : s.rows) {
+    json row;
+    row["method"] = methods::method_name(r.method);
+    row["scalar"] = r.scalar.name();
+    json t = json::object(), c = json::object();
+    for (int g = 0; g < 3; ++g)
+      if (r.ns_per_hinge[g] > 0) {
+        t[groups[g]] = r.ns_per_hinge[g];
+        if (s.clock_ghz > 0) c[groups[g]] = r.ns_per_hinge[g] * s.clock_ghz;
+      }
+    row["ns_per_hinge"] = t;
+    row["cycles_per_hinge"] = c;
+    json e = json::object(), own = json::object();
+    for (const auto& [category, errors] : r.error_u) e[category] = group_errors(errors);
+    for (const auto& [category, errors] : r.error_own) own[category] = group_errors(errors);
+    row["error_u"] = e;
+    if (!r.error_own.empty()) row["error_own"] = own;
+    row["nonfinite"] = r.nonfinite;
+    row["failed"] = r.failed;
+    row["hinges_measured"] = r.hinges;
+    row["worst_hess_u"] = r.worst_hess;
+    row["on_frontier"] = r.on_frontier;
+    row["seconds"] = r.seconds;
+    json h = json::array();  // the Hessian's error per hinge, 3 significant digits (the histogram's data)
+    for (const double v : r.hess_errors) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.3g", v);
+      h.push_back(std::stod(b));
+    }
+    row["hess_errors_u"] = h;
+    rows.push_back(row);
+  }
+  j["rows"] = rows;
+  json mesh = json::array();
+  for (const MeshRow& m : s.mesh) {
+    json row;
+    row["method"] = methods::method_name(m.method);
+    row["scalar"] = m.scalar.name();
+    row["vertices"] = m.vertices;
+    row["interior_edges"] = m.interior_edges;
+    row["seconds"] = m.seconds;
+    row["ns_per_edge"] = m.ns_per_edge;
+    if (m.vertices.size() >= 2) {
+      row["k"] = m.k;
+      row["ln_a"] = m.ln_a;
+    }
+    mesh.push_back(row);
+  }
+  j["mesh"] = mesh;
+  out << j.dump(1) << "\n";
+}
+
+void write_markdown(std::ostream& out, const Study& s) {
+  const Row* base = baseline(s);
+  out << "# hinge study\n\n";
+  out << "Machine: " << s.cpu << ", clock " << fixed(s.clock_ghz, 2) << " GHz (measured). Inputs: " << s.source << ", "
+      << s.hinges << " hinges certified" << (s.skipped ? " (" + std::to_string(s.skipped) + " skipped)" : "") << " in "
+      << s.categories.size() << " categories. " << (s.quick ? "Quick study" : "Full study") << ", " << fixed(s.seconds, 0)
+      << " s.\n\n";
+  out << "## Time and accuracy per hinge\n\n";
+  out << "Time: ns per hinge (one thread, median over passes), theta / theta and gradient / all three, and the\n"
+         "last as a multiple of fast in double. Error: the worst normwise Hessian error over all categories, in\n"
+         "units of 2^-53, each output rounded to double (against the certified oracle); own: the same in units of\n"
+         "the type's own unit roundoff. On the frontier: no other row is both faster and more accurate.\n\n";
+  out << "| method | scalar | theta ns | +grad ns | +hess ns | x fast | worst hess error (u) | worst own (u_type) | failed | nonfinite | frontier |\n";
+  out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+  for (const Row& r : s.rows) {
+    double own = 0;
+    for (const auto& [c, e] : r.error_own) own = std::max(own, e[2].max);
+    out << "| " << methods::method_name(r.method) << " | " << r.scalar.name() << " | " << ns(r.ns_per_hinge[0]) << " | "
+        << ns(r.ns_per_hinge[1]) << " | " << ns(r.ns_per_hinge[2]) << " | "
+        << (base && base->ns_per_hinge[2] > 0 && r.ns_per_hinge[2] > 0 ? fixed(r.ns_per_hinge[2] / base->ns_per_hinge[2], 1) : "-")
+        << " | " << units(r.worst_hess) << " | " << (r.error_own.empty() ? "-" : units(own)) << " | " << r.failed << " | "
+        << r.nonfinite << " | " << (r.on_frontier ? "yes" : "") << " |\n";
+  }
+  for (int g = 2; g >= 0; g -= 2) {
+    out << "\n## Worst " << groups[g] << " error per category (units of 2^-53, rounded to double)\n\n| method/scalar |";
+    for (const auto& c : s.categories) out << " " << c << " |";
+    out << "\n|---|";
+    for (std::size_t i = 0; i < s.categories.size(); ++i) out << "---:|";
+    out << "\n";
+    for (const Row& r : s.rows) {
+      out << "| " << label(r) << " |";
+      for (const auto& c : s.categories) {
+        const auto it = r.error_u.find(c);
+        out << " " << (it == r.error_u.end() ? "-" : units(it->second[g].max)) << " |";
+      }
+      out << "\n";
+    }
+  }
+  if (!s.mesh.empty()) {
+    out << "\n## Mesh level: ns per interior edge (energy, gradient and Hessian of the tan energy; one thread)\n\n";
+    std::vector<double> sizes;
+    for (const MeshRow& m : s.mesh)
+      for (double v : m.vertices)
+        if (std::find(sizes.begin(), sizes.end(), v) == sizes.end()) sizes.push_back(v);
+    std::sort(sizes.begin(), sizes.end());
+    out << "| method | scalar |";
+    for (double v : sizes) out << " " << static_cast<int>(std::lround(std::sqrt(v))) << "^2 |";
+    out << " k | ln a |\n|---|---|";
+    for (std::size_t i = 0; i < sizes.size() + 2; ++i) out << "---:|";
+    out << "\n";
+    for (const MeshRow& m : s.mesh) {
+      out << "| " << methods::method_name(m.method) << " | " << m.scalar.name() << " |";
+      for (double v : sizes) {
+        const auto it = std::find(m.vertices.begin(), m.vertices.end(), v);
+        out << " " << (it == m.vertices.end() ? "-" : ns(m.ns_per_edge[it - m.vertices.begin()])) << " |";
+      }
+      out << " " << (m.vertices.size() >= 2 ? fixed(m.k, 3) : "-") << " | " << (m.vertices.size() >= 2 ? fixed(m.ln_a, 2) : "-")
+          << " |\n";
+    }
+    out << "\nk and ln a: seconds per evaluation = a n^k over the sizes measured (n vertices), fitted in log-log as in\n"
+           "the paper's Table 2.\n";
+  }
+  out << "\n## Build\n\n";
+  for (const auto& [k, v] : s.build) out << "- " << k << ": " << v << "\n";
+}
+
+void print_summary(std::ostream& out, const Study& s) {
+  const Row* base = baseline(s);
+  char line[256];
+  std::snprintf(line, sizeof line, "hinge study: %zu hinges in %zu categories, %zu rows, %.2f GHz, %.0f s%s\n", s.hinges,
+                s.categories.size(), s.rows.size(), s.clock_ghz, s.seconds, s.quick ? " (quick)" : "");
+  out << line;
+  std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %14s %14s %8s  %s\n", "method", "scalar", "hess ns", "x fast",
+                "worst hess (u)", "median w-s (u)", "failed", "frontier");
+  out << line;
+  for (const Row& r : s.rows) {
+    const auto ws = r.error_u.find("well-shaped");
+    const double median = ws == r.error_u.end() ? 0 : ws->second[2].median;
+    const std::string ratio = base && base->ns_per_hinge[2] > 0 && r.ns_per_hinge[2] > 0
+                                  ? fixed(r.ns_per_hinge[2] / base->ns_per_hinge[2], 1)
+                                  : "-";
+    std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %14s %14s %8zu  %s\n", std::string(methods::method_name(r.method)).c_str(),
+                  r.scalar.name().c_str(), ns(r.ns_per_hinge[2]).c_str(), ratio.c_str(), units(r.worst_hess).c_str(),
+                  ws == r.error_u.end() ? "-" : units(median).c_str(), r.failed + r.nonfinite, r.on_frontier ? "*" : "");
+    out << line;
+  }
+  for (const MeshRow& m : s.mesh) {
+    if (m.vertices.empty()) continue;
+    std::snprintf(line, sizeof line, "mesh %-9s %-12s %s ns per interior edge at %d^2", std::string(methods::method_name(m.method)).c_str(),
+                  m.scalar.name().c_str(), ns(m.ns_per_edge.back()).c_str(), static_cast<int>(std::lround(std::sqrt(m.vertices.back()))));
+    out << line;
+    if (m.vertices.size() >= 2) out << ", k = " << fixed(m.k, 3);
+    out << "\n";
+  }
+  out << "(u: units of 2^-53, normwise, each output rounded to double, against the certified oracle; * on the frontier)\n";
+}
+
+}  // namespace hinge::study
