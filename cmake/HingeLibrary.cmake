@@ -12,3 +12,14 @@ function(hinge_library name)
   target_compile_features(hinge_${name} PUBLIC cxx_std_20)
   target_link_libraries(hinge_${name} PRIVATE $<BUILD_INTERFACE:hinge::warnings>)
 endfunction()
+
+# hinge_multiprecision_sources(file...): the units that instantiate the templates for the multiprecision
+# types (and the nested AutoDiff and generated code of hinge::baselines). Under the sanitizers they take
+# minutes each at -O1 (the kernels inlined into Boost.Multiprecision and QD arithmetic, then instrumented:
+# the generated code in mpfr 183 s at -O1 -g1, 66 s at -O0); there they are tested, not timed, so they
+# build at -O0 without debug information.
+function(hinge_multiprecision_sources)
+  if(HINGE_SANITIZE)
+    set_source_files_properties(${ARGN} PROPERTIES COMPILE_OPTIONS "-O0;-g0")
+  endif()
+endfunction()

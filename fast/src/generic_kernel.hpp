@@ -282,8 +282,9 @@ HINGE_FAST_INLINE void hessian(const HingeTriangle<Scalar>& T, const HingeTriang
 // a times 2^k, lane by lane: exact but where a result is subnormal.
 template <class W>
 HINGE_FAST_INLINE void scale_by_power_of_two(W& a, int k) {
+  using std::ldexp;  // QD's for dd and qd
   for (int l = 0; l < 2; ++l) {
-    a[l] = std::ldexp(a[l], k);
+    a[l] = ldexp(a[l], k);
   }
 }
 
@@ -395,7 +396,7 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   edges(x, f0, f1, f2);
   int exponent = 0;
   double P2 = 1;  // 2^-2m, 2^m <= M < 2^(m+1) (triangles())
-  if constexpr (kRanged) {
+  if constexpr (kRanged || QdScalar<Scalar>) {
     auto largest_component = [&f0, &f1, &f2] {  // M (infinite when a difference overflowed)
       double m = 0;
       for (int c = 0; c < 3; ++c)
@@ -403,13 +404,15 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
           m = std::max({m, std::fabs(high_part(f0[c], l)), std::fabs(high_part(f1[c], l)), std::fabs(high_part(f2[c], l))});
       return m;
     };
-    // Outside [2^-200, 2^200] (the range for which triangles() states its bounds), the edges are brought
-    // to M in [1, 2) by a power of two 2^-p: exact but for low parts that become subnormal (2^-1000 of
-    // M at most), and then the same numbers whatever the input's scale. theta is scale-invariant, grad
-    // theta scales as 2^-p and Hess theta as 2^-2p: undone exactly at the end. When a difference
-    // overflowed, the coordinates are quartered first (exact but for subnormal coordinates).
+    // The edges are brought to M in [1, 2) by a power of two 2^-p: exact but for low parts that become
+    // subnormal (2^-1000 of M at most), and then the same numbers whatever the input's scale. theta is
+    // scale-invariant, grad theta scales as 2^-p and Hess theta as 2^-2p: undone exactly at the end. double
+    // and float do so outside [2^-200, 2^200], the range for which triangles() states its bounds; dd and qd,
+    // whose exponent range is double's and whose products of up to six edge components would overflow or
+    // underflow far from 1 (and QD's atan2 fail on the result), always. When a difference overflowed, the
+    // coordinates are quartered first (exact but for subnormal coordinates).
     double largest = largest_component();
-    if (!(largest <= 0x1p200 && largest >= 0x1p-200)) [[unlikely]] {
+    if (QdScalar<Scalar> || !(largest <= 0x1p200 && largest >= 0x1p-200)) [[unlikely]] {
       if (!(largest <= std::numeric_limits<double>::max())) {
         std::array<double, 12> quarter;
         for (int i = 0; i < 12; ++i) quarter[i] = x[i] * 0x1p-4;
@@ -426,33 +429,7 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
       exponent += shift;
       largest = largest_component();  // in [1, 2)
     }
-    P2 = inverse_square_power_of_two(largest);
-  } else if constexpr (QdScalar<Scalar>) {
-    // QD's types have double's exponent range: their products of up to six edge components overflow or
-    // underflow where the edges are far from 1 (and QD's atan2 fails on what results). The edges are
-    // brought by a power of two 2^-p to a largest component M in [1, 2), as above but always: exact (dd's
-    // and qd's components scale alike), so every hinge computes the same bits as at its own scale, and
-    // the results are scaled back exactly. When a difference overflowed, the coordinates are quartered first.
-    auto largest_component = [&f0, &f1, &f2] {
-      double m = 0;
-      for (int c = 0; c < 3; ++c)
-        for (int l = 0; l < 2; ++l)
-          m = std::max({m, std::fabs(to_double(f0[c][l])), std::fabs(to_double(f1[c][l])), std::fabs(to_double(f2[c][l]))});
-      return m;
-    };
-    double largest = largest_component();
-    if (!(largest <= std::numeric_limits<double>::max())) {
-      std::array<double, 12> quarter;
-      for (int i = 0; i < 12; ++i) quarter[i] = x[i] * 0x1p-4;
-      edges(quarter, f0, f1, f2);
-      exponent = 4;
-      largest = largest_component();
-    }
-    const int shift = std::ilogb(largest);  // largest > 0: x1 != x2
-    for (auto* f : {&f0, &f1, &f2})
-      for (int c = 0; c < 3; ++c)
-        for (int l = 0; l < 2; ++l) (*f)[c][l] = ldexp((*f)[c][l], -shift);
-    exponent += shift;
+    if constexpr (kRanged) P2 = inverse_square_power_of_two(largest);
   }
 
   Vec<W> C;  // 2A n (upper), -2A~ n~ (lower): with the hinge edge, f2 x f0 = f1 x f2

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The `hinge` command against docs/contract.md: formats, per-line errors, exit statuses, output files.
 
-Usage: test_cli.py HINGE_BINARY EXAMPLES_DIR (docs/examples). Each check is a function test_*; the script runs them all,
+Usage: test_cli.py HINGE_BINARY EXAMPLES_DIR (docs/examples). Each check is a function test_*; script_tests.run_all runs them all,
 prints one line per check and "N passed, M failed", and exits nonzero if any failed.
 """
 import json
@@ -10,6 +10,8 @@ import os
 import subprocess
 import sys
 import tempfile
+
+from script_tests import run_all
 
 HINGE, EXAMPLES = sys.argv[1], sys.argv[2]
 
@@ -164,19 +166,5 @@ def test_threads_and_repeat_do_not_change_output():
         assert outs[0] == outs[1]
 
 
-def main():
-    tests = [(n, f) for n, f in sorted(globals().items()) if n.startswith("test_") and callable(f)]
-    failed = 0
-    for name, f in tests:
-        try:
-            f()
-            print("PASS", name)
-        except Exception as e:  # noqa: BLE001 - report every failure
-            failed += 1
-            print("FAIL", name, repr(e))
-    print(f"{len(tests) - failed} passed, {failed} failed")
-    return 1 if failed else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_all(globals()))

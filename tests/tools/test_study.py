@@ -2,7 +2,7 @@
 """`hinge study` against docs/contract.md: what it writes, that its errors are the true ones (an independent
 comparison of `hinge eval` with `hinge oracle`), and its bad-input handling.
 
-Usage: test_study.py HINGE_BINARY. Each check is a function test_*; the script runs them all, prints one line
+Usage: test_study.py HINGE_BINARY. Each check is a function test_*; script_tests.run_all runs them all, prints one line
 per check and "N passed, M failed", and exits nonzero if any failed.
 """
 import json
@@ -11,6 +11,8 @@ import os
 import subprocess
 import sys
 import tempfile
+
+from script_tests import run_all
 
 HINGE = sys.argv[1]
 
@@ -55,6 +57,14 @@ def test_quick_study_writes_every_output_with_four_methods_and_eight_scalar_type
         assert all(len(m["vertices"]) == len(m["ns_per_edge"]) >= 1 for m in s["mesh"])
         assert set(s["build"]) >= {"version", "commit", "compiler", "flags"}
         assert "fast" in out and "double" in out  # the summary table
+        # The plots are drawn by the script beside the program, deterministically: drawn again from the same
+        # study.json, every SVG has the same bytes (committed plots change only when the numbers do).
+        again = os.path.join(d, "again")
+        os.mkdir(again)
+        script = os.path.join(os.path.dirname(HINGE), "plot_study.py")
+        subprocess.run([sys.executable, script, os.path.join(d, "study.json"), again], check=True, timeout=300)
+        for name in ["pareto.svg", "histogram.svg", "scaling.svg"]:
+            assert open(os.path.join(d, name), "rb").read() == open(os.path.join(again, name), "rb").read(), name
 
 
 def test_errors_agree_with_an_independent_comparison_against_the_oracle():
@@ -135,19 +145,5 @@ def test_bad_input_exits_with_the_documented_status_and_writes_nothing():
             assert not os.path.exists(os.path.join(out_dir, "study.json")), args
 
 
-def main():
-    tests = [(n, f) for n, f in sorted(globals().items()) if n.startswith("test_") and callable(f)]
-    failed = 0
-    for name, f in tests:
-        try:
-            f()
-            print("PASS", name)
-        except Exception as e:  # noqa: BLE001 - report every failure
-            failed += 1
-            print("FAIL", name, repr(e))
-    print(f"{len(tests) - failed} passed, {failed} failed")
-    return 1 if failed else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_all(globals()))
