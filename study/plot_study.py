@@ -3,7 +3,8 @@
 
   pareto.svg/.png     time per hinge against error, one point per method x scalar type, the frontier drawn
   histogram.svg/.png  the distribution of Hessian errors per hinge (the paper's Fig. 6)
-  scaling.svg/.png    time per mesh evaluation against vertices, with the fitted k (Fig. 7, Table 2)
+  scaling.svg/.png    time per mesh evaluation against vertices in double, with the fitted k (Fig. 7,
+                      Table 2), and per interior edge in every scalar type
 
 Usage: plot_study.py STUDY.json OUTDIR. Needs matplotlib (Debian: python3-matplotlib). The SVG files are
 deterministic (fixed hash salt, no date), so committed plots change only when the numbers do.
@@ -35,9 +36,10 @@ def scalar_order(name):
 
 
 def colours(names):
-    cmap = plt.get_cmap("viridis")
+    """One distinct colour per scalar type, in the types' order (tab10 holds the ten of the full study)."""
     names = sorted(set(names), key=scalar_order)
-    return {n: cmap(i / max(1, len(names) - 1) * 0.9) for i, n in enumerate(names)}
+    cmap = plt.get_cmap("tab10" if len(names) <= 10 else "tab20")
+    return {n: cmap(i) for i, n in enumerate(names)}
 
 
 def save(fig, outdir, name):
@@ -73,7 +75,7 @@ def pareto(study, outdir):
             failed = r["failed"] + r["nonfinite"]
             t = r["ns_per_hinge"]["hess"]
             ax.scatter(t, max(e, FLOOR), marker=MARKERS.get(r["method"], "x"), color=colour[r["scalar"]],
-                       edgecolors="red" if failed else "none", linewidths=1.2, s=36, zorder=3)
+                       edgecolors="black" if failed else "none", linewidths=1.2, s=36, zorder=3)
             if not failed:
                 points.append((t, max(e, FLOOR), r["method"], r["scalar"]))
         best = frontier(points)
@@ -96,7 +98,7 @@ def pareto(study, outdir):
         ax.grid(True, which="major", lw=0.3)
     handles = [plt.Line2D([], [], marker=MARKERS[m], ls="", color="0.4", label=m) for m in METHODS]
     handles += [plt.Line2D([], [], marker="o", ls="", color=c, label=s) for s, c in colour.items()]
-    handles.append(plt.Line2D([], [], marker="o", ls="", mfc="none", mec="red", label="failed or non-finite on some hinge"))
+    handles.append(plt.Line2D([], [], marker="o", ls="", mfc="none", mec="black", label="failed or non-finite on some hinge"))
     fig.legend(handles=handles, loc="lower center", ncol=8, fontsize=7, frameon=False)
     fig.suptitle(f"What accuracy costs: {study['machine']['cpu']}, {study['machine']['clock_ghz']:.2f} GHz, "
                  f"{study['inputs']['hinges']} hinges ({study['inputs']['source']})")
@@ -134,29 +136,48 @@ def histogram(study, outdir):
 
 
 def scaling(study, outdir):
-    fig, ax = plt.subplots(figsize=(7.5, 5))
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(12, 4.8))
     method_colour = {m: plt.get_cmap("tab10")(i) for i, m in enumerate(METHODS)}
-    styles = ["-", "--", ":", "-."]
-    scalars = sorted({m["scalar"] for m in study["mesh"]}, key=scalar_order)
+    # Left: every method in double against size (the paper's Fig. 7), fitted t = a n^k.
     for m in study["mesh"]:
-        if not m["vertices"]:
+        if m["scalar"] != "double" or not m["vertices"]:
             continue
-        style = styles[scalars.index(m["scalar"]) % len(styles)]
-        label = f"{m['method']}/{m['scalar']}" + (f": k = {m['k']:.3f}" if "k" in m else "")
         c = method_colour.get(m["method"], "k")
         ax.plot(m["vertices"], m["seconds"], marker=MARKERS.get(m["method"], "x"), ls="", color=c, ms=4)
+        label = m["method"] + (f": k = {m['k']:.3f}" if "k" in m else "")
         if "k" in m:
             xs = [m["vertices"][0], m["vertices"][-1]]
-            ax.plot(xs, [math.exp(m["ln_a"]) * x ** m["k"] for x in xs], ls=style, color=c, lw=1, label=label)
+            ax.plot(xs, [math.exp(m["ln_a"]) * x ** m["k"] for x in xs], color=c, lw=1, label=label)
         else:
-            ax.plot([], [], ls=style, color=c, label=label)
+            ax.plot([], [], color=c, label=label)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("vertices")
-    ax.set_ylabel("seconds per evaluation: energy, gradient, Hessian (one thread)")
-    ax.set_title("Mesh evaluation time against size, fitted t = a n^k (the paper's Fig. 7)")
+    ax.set_ylabel("seconds per evaluation (one thread)")
+    ax.set_title("double: time against size, t = a n^k (Fig. 7)")
     ax.grid(True, which="major", lw=0.3)
-    ax.legend(fontsize=7, ncol=2)
+    ax.legend(fontsize=7)
+    # Right: ns per interior edge (the median over the sizes measured) in every scalar type.
+    scalars = sorted({m["scalar"] for m in study["mesh"]}, key=scalar_order)
+    for method in METHODS:
+        xs, ys = [], []
+        for m in study["mesh"]:
+            if m["method"] == method and m["ns_per_edge"]:
+                v = sorted(m["ns_per_edge"])
+                xs.append(scalars.index(m["scalar"]))
+                ys.append(v[len(v) // 2])
+        if xs:
+            order = sorted(range(len(xs)), key=lambda k: xs[k])
+            bx.plot([xs[k] for k in order], [ys[k] for k in order], marker=MARKERS[method], color=method_colour[method],
+                    lw=1, label=method)
+    bx.set_xticks(range(len(scalars)))
+    bx.set_xticklabels(scalars, rotation=30, ha="right")
+    bx.set_yscale("log")
+    bx.set_ylabel("ns per interior edge (median over sizes)")
+    bx.set_title("every scalar type: energy, gradient and Hessian per edge")
+    bx.grid(True, which="major", lw=0.3)
+    bx.legend(fontsize=7)
+    fig.suptitle("Mesh evaluation (tan energy, the benchmark's cloth)")
     fig.tight_layout()
     save(fig, outdir, "scaling")
 

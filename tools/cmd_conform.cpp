@@ -38,6 +38,7 @@ struct ConformOptions {
   std::string output, candidate, plugin, symbol = "hinge_candidate", save, write_vectors, method, scalar = "double";
   std::vector<std::string> categories;
   conf::Policy policy;
+  double case_timeout = 10;  // seconds, --plugin
   // mesh mode
   std::string mesh, rest, energy, hessian, gradient;
   double k = 1;
@@ -108,7 +109,7 @@ int run_cases(const ConformOptions& o) {
       method.emplace(methods::parse_method(o.method), parse_scalar_type(o.scalar));  // std::invalid_argument: usage
       name = "hinge eval --method " + o.method + " --scalar " + o.scalar;
     } else {
-      plugin.emplace(o.plugin, o.symbol);
+      plugin.emplace(o.plugin, o.symbol, o.case_timeout);
       name = "plugin " + o.plugin + " (" + o.symbol + ")";
     }
   } catch (const InputError& e) {
@@ -121,6 +122,7 @@ int run_cases(const ConformOptions& o) {
 
   const std::vector<conf::Case> cases = selected_inputs(o);
   std::vector<conf::CaseOutcome> outcomes;
+  std::vector<std::string> not_survived;  // cases on which the plugin crashed or timed out
   Progress progress("hinge conform: cases", cases.size());
   std::size_t unknown = file.size();
   for (const conf::Case& c : cases) {
@@ -128,6 +130,7 @@ int run_cases(const ConformOptions& o) {
     conf::CandidateResult r;
     if (plugin) {
       r = (*plugin)(c.x);
+      if (conf::Plugin::fatal(r)) not_survived.push_back(c.id + ": " + r.error);
     } else if (method) {
       r = method_result(method->first, method->second, c.x);
     } else if (auto it = file.find(c.id); it != file.end()) {
@@ -143,7 +146,11 @@ int run_cases(const ConformOptions& o) {
     std::cerr << "hinge conform: " << unknown << " line(s) of the candidate have ids that are not conformance cases (ignored)\n";
   if (o.verbose) print_cases(std::cout, outcomes);
   const bool pass = conf::print_report(std::cout, outcomes, o.policy, name);
-  return pass ? exit_done : exit_invalid_input;
+  if (!not_survived.empty()) {
+    std::cout << "\nthe plugin did not survive " << not_survived.size() << " case(s) (each failed; its process was started again):\n";
+    for (const auto& line : not_survived) std::cout << "  " << line << "\n";
+  }
+  return pass && not_survived.empty() ? exit_done : exit_invalid_input;
 }
 
 int write_inputs(const ConformOptions& o) {
@@ -174,16 +181,11 @@ int run_mesh(const ConformOptions& o) {
   parameters.k = o.k;
   Mesh deformed, rest;
   Topology topology;
-  try {
-    deformed = io::read_obj(o.mesh);
-    rest = o.rest.empty() ? deformed : io::read_obj(o.rest);
-    topology = build_topology(deformed);
-    check_faces_nondegenerate(deformed);
-    check_faces_nondegenerate(rest);
-  } catch (const std::exception& e) {
-    std::cerr << "hinge conform: " << e.what() << "\n";
-    return exit_usage;
-  }
+  deformed = io::read_obj(o.mesh);  // hinge::InputError: exit status 1, as for every command that reads a mesh
+  rest = o.rest.empty() ? deformed : io::read_obj(o.rest);
+  topology = build_topology(deformed);
+  check_faces_nondegenerate(deformed);
+  check_faces_nondegenerate(rest);
   const oracle::CertifiedMesh m = oracle::certified_mesh(deformed, rest, topology, parameters, reference::want_all);
   const Eigen::Index n = 3 * static_cast<Eigen::Index>(topology.vertex_count);
   Eigen::SparseMatrix<double> hessian;
@@ -237,6 +239,11 @@ Action add_conform(CLI::App& app) {
   cmd->add_option("--candidate", o->candidate, "Check outputs in the hinge eval format (same ids as --inputs)");
   cmd->add_option("--plugin", o->plugin, "Check a shared library exporting the C function of hinge/candidate.h");
   cmd->add_option("--symbol", o->symbol, "The plugin's function")->capture_default_str();
+  cmd->add_option("--case-timeout", o->case_timeout,
+                  "With --plugin: seconds a case may take (the plugin runs in a child process: a crash or a time-out\n"
+                  "fails that case, and the others still run)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--method", o->method, "Check one of hinge eval's methods: reference, fast, autodiff, symbolic");
   cmd->add_option("--scalar", o->scalar, "With --method: its scalar type")->capture_default_str();
   cmd->add_option("--save", o->save, "With --plugin or --method: also write its outputs in the hinge eval format");

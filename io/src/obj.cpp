@@ -67,6 +67,9 @@ class Parser {
   }
 
   Mesh finish() {
+    if (mesh_.faces.empty())  // docs/contract.md (version 2): a mesh with no faces is an error
+      throw InputError(name_ + ": the mesh has no faces (" +
+                       (mesh_.vertices.empty() ? std::string("the file has no v or f lines") : std::to_string(mesh_.vertices.size()) + " vertices, no f lines") + ")");
     const std::size_t n = mesh_.vertices.size();
     for (std::size_t f = 0; f < mesh_.faces.size(); ++f) {
       for (const Index v : mesh_.faces[f]) {

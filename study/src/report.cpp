@@ -14,6 +14,7 @@
 
 #include "build_info.hpp"
 #include "hinge/oracle/conformance.hpp"
+#include "hinge/study/measure.hpp"
 #include "study_internal.hpp"
 
 namespace hinge::study {
@@ -82,6 +83,34 @@ std::string units(double v) {
   return b;
 }
 
+// The paper's Table 2 for one scalar type: k shared by the methods (the mean of their fitted k over the
+// paper's sizes, 11^2 .. 81^2), each method's ln a refitted with it, and the speedup of fast over each,
+// exp(ln a_M - ln a_fast). Empty when fewer than two methods have two sizes.
+struct SharedFit {
+  double k = 0;
+  std::vector<std::pair<std::string, double>> ln_a;  // method, ln a
+  double fast_ln_a = 0;
+  bool has_fast = false;
+};
+SharedFit shared_fit(const Study& s, ScalarType::Kind kind) {
+  SharedFit f;
+  std::vector<std::pair<std::string, std::vector<std::pair<double, double>>>> series;
+  for (const MeshRow& m : s.mesh) {
+    if (m.scalar.kind != kind) continue;
+    std::vector<std::pair<double, double>> points;
+    for (std::size_t i = 0; i < m.vertices.size(); ++i)
+      if (m.vertices[i] <= 81 * 81) points.emplace_back(m.vertices[i], m.seconds[i]);
+    if (points.size() >= 2) series.emplace_back(std::string(methods::method_name(m.method)), points);
+  }
+  if (series.size() < 2) return f;
+  for (const auto& [method, points] : series) f.k += fit_power_law(points).k / double(series.size());
+  for (const auto& [method, points] : series) {
+    f.ln_a.emplace_back(method, fit_ln_a(points, f.k));
+    if (method == "fast") f.fast_ln_a = f.ln_a.back().second, f.has_fast = true;
+  }
+  return f;
+}
+
 }  // namespace
 
 void write_json(std::ostream& out, const Study& s) {
@@ -145,6 +174,14 @@ void write_json(std::ostream& out, const Study& s) {
     mesh.push_back(row);
   }
   j["mesh"] = mesh;
+  if (const SharedFit f = shared_fit(s, ScalarType::Kind::kind_double); !f.ln_a.empty()) {
+    json t = {{"scalar", "double"}, {"k", f.k}};
+    for (const auto& [method, ln_a] : f.ln_a) {
+      t["ln_a"][method] = ln_a;
+      if (f.has_fast) t["fast_speedup"][method] = std::exp(ln_a - f.fast_ln_a);
+    }
+    j["mesh_shared_k"] = t;
+  }
   out << j.dump(1) << "\n";
 }
 
@@ -209,6 +246,14 @@ void write_markdown(std::ostream& out, const Study& s) {
     }
     out << "\nk and ln a: seconds per evaluation = a n^k over the sizes measured (n vertices), fitted in log-log as in\n"
            "the paper's Table 2.\n";
+    if (const SharedFit f = shared_fit(s, ScalarType::Kind::kind_double); !f.ln_a.empty()) {
+      out << "\nAs the paper's Table 2 (double, sizes 11^2 .. 81^2): one k for all methods, the mean of theirs, k = "
+          << fixed(f.k, 3) << "; ln a refitted with it, and the speedup of fast, exp(ln a_M - ln a_fast):\n\n"
+          << "| method | ln a | fast's speedup |\n|---|---:|---:|\n";
+      for (const auto& [method, ln_a] : f.ln_a)
+        out << "| " << method << " | " << fixed(ln_a, 3) << " | " << (f.has_fast ? fixed(std::exp(ln_a - f.fast_ln_a), 2) : "-")
+            << " |\n";
+    }
   }
   out << "\n## Build\n\n";
   for (const auto& [k, v] : s.build) out << "- " << k << ": " << v << "\n";

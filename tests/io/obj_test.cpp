@@ -100,7 +100,7 @@ TEST(ObjRoundTrip, SeventeenDigitCoordinatesReadBackBitForBit) {
     std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", values[i], values[i + 1], values[i + 2]);
     text += line;
   }
-  expect_same_bits(values, read_text(text));
+  expect_same_bits(values, read_text(text + "f 1 2 3\n"));
 }
 
 TEST(ObjWrite, WritesShortestCoordinatesAndOneBasedFaces) {
@@ -161,7 +161,7 @@ TEST(ObjRead, AcceptsPlusSignsCrlfCommentsWhitespaceAndOtherLines) {
 }
 
 TEST(ObjRead, KeepsNegativeZeroAndSubnormals) {
-  const Mesh m = read_text("v -0 -0.0 4.9406564584124654e-324\nv 2.2250738585072014e-308 1e-310 -1e-320\n");
+  const Mesh m = read_text("v -0 -0.0 4.9406564584124654e-324\nv 2.2250738585072014e-308 1e-310 -1e-320\nv 1 1 1\nf 1 2 3\n");
   EXPECT_TRUE(std::signbit(m.vertices[0][0]));
   EXPECT_TRUE(std::signbit(m.vertices[0][1]));
   EXPECT_EQ(m.vertices[0][2], std::numeric_limits<double>::denorm_min());
@@ -218,6 +218,15 @@ TEST(ObjRead, RejectsBadFaceIndicesNamingFileAndLine) {
     msg = read_error(verts + "f 1 2 " + bad + "\n");
     EXPECT_TRUE(contains(msg, "test.obj:4: ")) << bad;
     EXPECT_TRUE(contains(msg, "'" + bad + "'")) << bad;
+  }
+}
+
+TEST(ObjRead, RejectsAMeshWithNoFacesNamingTheFile) {
+  // docs/contract.md (version 2): an empty file, or one with vertices and no faces, is not a mesh.
+  for (const std::string text : {"", "\n# only a comment\n", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "vt 0 0\nvn 0 0 1\n"}) {
+    const std::string msg = read_error(text, "empty.obj");
+    EXPECT_TRUE(contains(msg, "empty.obj: ")) << text;
+    EXPECT_TRUE(contains(msg, "no faces")) << text;
   }
 }
 

@@ -153,6 +153,23 @@ def test_invalid_mesh_exits_1_naming_the_problem_and_leaves_no_file():
         assert code == 1 and "bad.obj:2" in err, err
 
 
+def test_a_mesh_with_no_faces_exits_1_naming_the_file_for_every_mesh_command():
+    # docs/contract.md, version 2: an empty file, or one with vertices and no faces, is not a mesh.
+    with tempfile.TemporaryDirectory() as d:
+        empty, faceless = os.path.join(d, "empty.obj"), os.path.join(d, "faceless.obj")
+        open(empty, "w").close()
+        with open(faceless, "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\n")
+        H = os.path.join(d, "H.mtx")
+        for mesh in [empty, faceless]:
+            for command in [["hessian"], ["oracle"]]:
+                code, out, err = run(command + ["--mesh", mesh, "--energy", "tan", "--k", "1", "--out", H])
+                assert code == 1 and mesh in err and "no faces" in err, (command, code, err)
+                assert not os.path.exists(H) and "nan" not in out.lower(), command
+            code, _, err = run(["conform", "--mesh", mesh, "--energy", "tan", "--hessian", H])
+            assert code == 1 and mesh in err and "no faces" in err, (code, err)
+
+
 def test_threads_and_repeat_do_not_change_output():
     with tempfile.TemporaryDirectory() as d:
         rest, mesh = os.path.join(d, "rest.obj"), os.path.join(d, "mesh.obj")

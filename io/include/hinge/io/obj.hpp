@@ -13,7 +13,8 @@
 namespace hinge::io {
 
 // Throws hinge::InputError "FILE:LINE: why" for an unreadable file, a malformed or non-finite
-// coordinate, a face with other than 3 vertices, or an index out of range.
+// coordinate, a face with other than 3 vertices, or an index out of range; "FILE: the mesh has no faces
+// (...)" for a file without faces, an empty one included (contract version 2).
 Mesh read_obj(const std::string& path);
 Mesh read_obj(std::istream& in, const std::string& name_for_errors);
 
