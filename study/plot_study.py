@@ -63,8 +63,9 @@ def pareto(study, outdir):
     typical = "well-shaped" if "well-shaped" in study["inputs"]["categories"] else study["inputs"]["categories"][0]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
     panels = [
-        ("worst over all categories", lambda r: max(e["hess"]["max"] for e in r["error_u"].values())),
-        (f"median over {typical}", lambda r: r["error_u"][typical]["hess"]["median"] if typical in r["error_u"] else None),
+        ("worst of any output (theta, gradient, Hessian), all categories",
+         lambda r: max(g["max"] for e in r["error_u"].values() for g in e.values())),
+        (f"median Hessian error over {typical}", lambda r: r["error_u"][typical]["hess"]["median"] if typical in r["error_u"] else None),
     ]
     for ax, (title, error) in zip(axes, panels):
         points = []
@@ -93,7 +94,7 @@ def pareto(study, outdir):
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("ns per hinge: theta, gradient and Hessian (one thread)")
-        ax.set_ylabel(f"Hessian error, units of 2^-53 (0 drawn at {FLOOR})")
+        ax.set_ylabel(f"normwise error, units of 2^-53 (0 drawn at {FLOOR})")
         ax.set_title(title)
         ax.grid(True, which="major", lw=0.3)
     handles = [plt.Line2D([], [], marker=MARKERS[m], ls="", color="0.4", label=m) for m in METHODS]
@@ -119,7 +120,8 @@ def histogram(study, outdir):
                 continue
             ax.hist(errs, bins=bins, histtype="step", lw=1.3, label=key(r), color=colour_of(r))
         ax.set_xlabel("log10 of the Hessian's normwise error, units of 2^-53 (per hinge)")
-        ax.set_ylabel("hinges")
+        ax.set_ylabel("hinges (log scale: the tails are the hard cases)")
+        ax.set_yscale("log")
         ax.set_title(title)
         ax.legend(fontsize=7)
 

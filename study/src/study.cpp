@@ -44,18 +44,21 @@ Row run_row(methods::Method method, const ScalarType& scalar, const Prepared& p,
 }
 
 // A row is on the frontier when no other row is at least as fast (all three outputs) and at least as
-// accurate (its worst Hessian error over the categories), and better in one of the two.
+// accurate (its worst error of any output group in any category), and better in one of the two.
 void mark_frontier(std::vector<Row>& rows) {
   for (Row& r : rows) {
-    r.worst_hess = 0;
-    for (const auto& [category, e] : r.error_u) r.worst_hess = std::max(r.worst_hess, e[2].max);
+    r.worst = r.worst_hess = 0;
+    for (const auto& [category, e] : r.error_u) {
+      r.worst_hess = std::max(r.worst_hess, e[2].max);
+      for (const ErrorStats& g : e) r.worst = std::max(r.worst, g.max);
+    }
   }
   const auto usable = [](const Row& r) { return r.ns_per_hinge[2] > 0 && !r.error_u.empty() && r.failed + r.nonfinite == 0; };
   for (Row& r : rows) {
     r.on_frontier = usable(r);
     for (const Row& o : rows)
-      if (&o != &r && usable(o) && o.ns_per_hinge[2] <= r.ns_per_hinge[2] && o.worst_hess <= r.worst_hess &&
-          (o.ns_per_hinge[2] < r.ns_per_hinge[2] || o.worst_hess < r.worst_hess))
+      if (&o != &r && usable(o) && o.ns_per_hinge[2] <= r.ns_per_hinge[2] && o.worst <= r.worst &&
+          (o.ns_per_hinge[2] < r.ns_per_hinge[2] || o.worst < r.worst))
         r.on_frontier = false;
   }
 }

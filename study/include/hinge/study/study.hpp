@@ -86,7 +86,8 @@ struct Row {
   std::size_t nonfinite = 0;  // returned a NaN or an infinity, or a value outside double's range
   double seconds = 0;         // what the row took
   bool on_frontier = false;   // no other row is both faster (theta, gradient and Hessian) and more accurate
-  double worst_hess = 0;      // the largest Hessian error of any category (units of 2^-53)
+  double worst = 0;           // the largest error of any output group and category (units of 2^-53)
+  double worst_hess = 0;      // the largest Hessian error of any category
 };
 
 struct MeshRow {
