@@ -13,8 +13,8 @@ find_library(HINGE_QD_LIBRARY qd REQUIRED)
 find_library(HINGE_QUADMATH_LIBRARY quadmath
              HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES} REQUIRED)
 
+find_package(nlohmann_json 3.11 REQUIRED) # hinge::io's JSON Lines
 if(HINGE_BUILD_TOOLS OR HINGE_BUILD_TESTS)
-  find_package(nlohmann_json 3.11 REQUIRED)
   find_package(CLI11 2.1 REQUIRED)
 endif()
 if(HINGE_BUILD_TESTS)

@@ -1,6 +1,6 @@
 # install() and export so that find_package(hinge) gives hinge::reference (and hinge::fast).
 include(CMakePackageConfigHelpers)
-install(TARGETS hinge_reference hinge_io hinge_fast hinge_baselines hinge_methods hinge_warnings EXPORT hingeTargets
+install(TARGETS hinge_reference hinge_reference_types hinge_io hinge_fast hinge_baselines hinge_methods hinge_warnings EXPORT hingeTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

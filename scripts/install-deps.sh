@@ -17,6 +17,7 @@ packages=(
   libcli11-dev                  # command-line parsing
   python3-sympy                 # symbolic checks in proofs/, the symbolic method's code generator
   python3-matplotlib            # hinge study's plots (study/plot_study.py)
+  clang libclang-rt-14-dev      # libFuzzer: the fuzz preset (tests/fuzz, docs/testing.md)
 )
 
 missing=()

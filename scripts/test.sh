@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The README's test command: installs the dependencies, then builds and runs every test twice: a Release
-# build (all labels: unit, properties, proofs, conformance), and an AddressSanitizer +
-# UndefinedBehaviorSanitizer build (unit and properties; a test there checks the flags reached the
-# compiler). Depth of the property tests: HINGE_TEST_DEPTH (quick by default; see docs/testing.md).
+# build (all labels: unit, properties, proofs, conformance, fuzz), and an AddressSanitizer +
+# UndefinedBehaviorSanitizer build (unit, properties and fuzz, the readers' fuzz corpora replayed; a test
+# there checks the flags reached the compiler). Depth of the property tests: HINGE_TEST_DEPTH (quick by default; see docs/testing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
@@ -15,4 +15,4 @@ ctest --preset release
 echo "== asan-ubsan build and tests"
 cmake --preset asan-ubsan
 cmake --build --preset asan-ubsan
-ctest --preset asan-ubsan -L 'unit|properties|sanitizers'
+ctest --preset asan-ubsan -L 'unit|properties|sanitizers|fuzz'

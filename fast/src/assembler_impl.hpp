@@ -26,6 +26,7 @@
 #include "assembly_plan.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/reference/errors.hpp"
+#include "hinge/reference/fp_environment.hpp"
 #include "hinge/reference/hinge_checks.hpp"
 #include "passes.hpp"
 #include "team.hpp"
@@ -207,6 +208,7 @@ template <class Scalar>
 void Workspace<Scalar>::evaluate(const Mesh& deformed, const std::vector<HingeCoefficients<Scalar>>& coefficients,
                                   Model model, unsigned request, int threads, MeshDerivatives<Scalar>& out,
                                   std::vector<HingeCoefficients<Scalar>>* release) {
+  check_fp_environment();  // the exact steps need rounding to nearest and subnormals
   check_mesh_size(deformed, "deformed");
   threads = std::max(threads, 1);
   face_pass(deformed, threads, "deformed");  // line 8 (normals first: theta needs both of every edge)

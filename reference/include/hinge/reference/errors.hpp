@@ -21,6 +21,13 @@ class DomainError : public std::domain_error {
   using std::domain_error::domain_error;
 };
 
+// The calling thread's floating-point environment is not the one exact arithmetic needs (rounding to
+// nearest, subnormals kept; hinge/reference/fp_environment.hpp). The message says which setting differs.
+class EnvironmentError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // DomainError "<what> is outside the range of double" (what: "theta", "the gradient", "the Hessian", "the
 // energy"): an exact result, or one computed in a wider type, that no finite double can hold.
 [[noreturn]] void throw_outside_double(const std::string& what);

@@ -9,6 +9,7 @@
 
 #include "hinge/reference/errors.hpp"
 #include "hinge/reference/evaluate.hpp"
+#include "hinge/reference/fp_environment.hpp"
 #include "hinge/reference/hinge_checks.hpp"
 #include "hinge/reference/predicates.hpp"
 
@@ -16,6 +17,7 @@ namespace hinge::reference {
 
 template <HingeScalar Scalar>
 PreparedHinge<Scalar> prepare_hinge(const std::array<double, 12>& x) {
+  check_fp_environment();  // the exact steps below need rounding to nearest and subnormals
   check_hinge(x);  // docs/contract.md: non-finite, zero-length hinge edge, zero-area triangle (exactly)
   PreparedHinge<Scalar> p;
   p.sign = static_cast<ExactSign>(hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]},
