@@ -26,6 +26,8 @@ void add_mesh_options(CLI::App* cmd, MeshOptions& o, bool mesh_required) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--repeat", o.repeat, "Evaluate N times (for timing from outside); outputs from the last")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--allow-no-hinges", o.allow_no_hinges,
+                "Accept a mesh without an interior edge (its energy is 0); without this flag it is an error");
 }
 
 namespace {
@@ -63,6 +65,9 @@ MeshJob load_mesh_job(const MeshOptions& o) {
   job.deformed = io::read_obj(o.mesh);
   if (!o.rest.empty()) job.rest = io::read_obj(o.rest);
   job.topology = build_topology(job.deformed);
+  if (job.topology.hinges.empty() && !o.allow_no_hinges)
+    throw InputError(o.mesh + ": the mesh has no interior edge, so its bending energy is 0 whatever its shape" +
+                     " (--allow-no-hinges if that is meant)");
   check_faces_nondegenerate(job.deformed);
   if (job.rest) check_faces_nondegenerate(*job.rest);
   return job;

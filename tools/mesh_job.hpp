@@ -20,10 +20,11 @@ struct MeshOptions {
   std::optional<double> k, young, poisson, thickness;
   int threads = 0;  // 0: all cores
   int repeat = 1;
+  bool allow_no_hinges = false;  // a mesh without an interior edge is accepted (its energy is 0)
 };
 
 // Registers --mesh, --rest, --energy, --k, --young, --poisson, --thickness, --out, --gradient,
-// --threads, --repeat on `cmd`. With `mesh_required` false, --mesh is optional (hinge oracle).
+// --threads, --repeat, --allow-no-hinges on `cmd`. With `mesh_required` false, --mesh is optional (hinge oracle).
 void add_mesh_options(CLI::App* cmd, MeshOptions& o, bool mesh_required);
 
 // The meshes read and checked, with the energy's parameters: what an evaluation takes.

@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+
 #include <stdexcept>
 #include <system_error>
 
@@ -12,7 +14,10 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   temporary_ = path_;
   temporary_ += ".tmp-" + std::to_string(::getpid());
   out_.open(temporary_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw std::runtime_error("cannot write " + temporary_.string());
+  if (!out_) {
+    const std::string why = std::error_code(errno, std::generic_category()).message();
+    throw std::runtime_error("cannot write " + path_.string() + ": " + why);
+  }
   out_.exceptions(std::ios::badbit);
 }
 
