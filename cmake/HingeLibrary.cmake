@@ -19,7 +19,7 @@ endfunction()
 # the generated code in mpfr 183 s at -O1 -g1, 66 s at -O0); there they are tested, not timed, so they
 # build at -O0 without debug information.
 function(hinge_multiprecision_sources)
-  if(HINGE_SANITIZE)
+  if(HINGE_SANITIZE OR HINGE_SANITIZE_THREAD)
     set_source_files_properties(${ARGN} PROPERTIES COMPILE_OPTIONS "-O0;-g0")
   endif()
 endfunction()

@@ -13,3 +13,10 @@ if(HINGE_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
   add_compile_definitions(HINGE_SANITIZED=1)
 endif()
+
+# HINGE_SANITIZE_THREAD: ThreadSanitizer (the tsan preset: the threaded tests only, docs/testing.md).
+option(HINGE_SANITIZE_THREAD "Build with -fsanitize=thread" OFF)
+if(HINGE_SANITIZE_THREAD)
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()
