@@ -19,6 +19,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <atomic>
 #include <string>
 #include <vector>
@@ -35,6 +37,12 @@ namespace hinge::fast {
 namespace detail {
 
 constexpr std::size_t kFaceChunk = 4096, kHingeChunk = 4096, kCompareChunk = 1 << 18;
+
+// Meshes whose extent (the largest coordinate range) lies in [2^-kUnscaled, 2^(kUnscaled + 1)) are
+// evaluated as they are; the passes form products of up to six edge lengths, which stay far inside every
+// type's range there (float's included: 2^(6 * 17) < 2^128). Others are evaluated scaled by a power of two
+// (Workspace::normalized).
+constexpr int kUnscaled = 16;
 
 // Everything an Assembler keeps between evaluations.
 template <class Scalar>
@@ -53,6 +61,7 @@ class Workspace {
  private:
   enum class Purpose { evaluate, rest, previous };
   void check_mesh_size(const Mesh& mesh, const char* what) const;
+  const Mesh& normalized(const Mesh& mesh, int& p);
   void face_pass(const Mesh& mesh, int threads, const char* what);
   template <class PerHinge>
   bool hinge_pass(const Mesh& mesh, int threads, bool skip_suspects, PerHinge&& per_hinge);
@@ -70,7 +79,38 @@ class Workspace {
   bool want_theta_ = true;
   Model last_model_ = Model::tan;
   const std::vector<HingeCoefficients<Scalar>>* last_coefficients_ = nullptr;
+  Mesh scaled_;  // a mesh far from unit size, scaled (normalized)
 };
+
+// The mesh the passes evaluate, and the power of two p with mesh = 2^p (what they evaluate): `mesh` itself
+// (p = 0) when its extent lies in [2^-kUnscaled, 2^(kUnscaled + 1)), else a copy scaled by 2^-p so that its
+// extent lies in [1, 2) (docs/numerics.md). The scaling is exact (a power of two; a coordinate small enough to
+// lose bits to it is below 2^-1074 of the extent, far beneath the mesh's resolution), theta and every
+// rest-state coefficient are scale-invariant, and the gradient and Hessian scale back exactly by 2^-p and
+// 2^-2p: a mesh scaled by 2^k gives exactly scaled results, and one at 2^-300 or 2^300 is evaluated as
+// one at unit size would be. Meshes with a non-finite coordinate are left to the checks.
+template <class Scalar>
+const Mesh& Workspace<Scalar>::normalized(const Mesh& mesh, int& p) {
+  p = 0;
+  if (mesh.vertices.empty()) return mesh;
+  std::array<double, 3> lo = mesh.vertices[0], hi = lo;
+  for (const auto& v : mesh.vertices)
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], v[c]);
+      hi[c] = std::max(hi[c], v[c]);
+    }
+  double extent = 0;
+  for (int c = 0; c < 3; ++c) extent = std::max(extent, hi[c] - lo[c]);
+  if (!(extent > 0) || !std::isfinite(extent)) return mesh;
+  const int e = std::ilogb(extent);
+  if (e >= -kUnscaled && e <= kUnscaled) return mesh;
+  p = e;
+  scaled_.faces = mesh.faces;
+  scaled_.vertices.resize(mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    for (int c = 0; c < 3; ++c) scaled_.vertices[i][c] = std::ldexp(mesh.vertices[i][c], -p);
+  return scaled_;
+}
 
 // The face pass; it also compares the mesh's faces with the topology's, chunk by chunk (check_mesh_size
 // has checked the counts, so the pass reads only valid vertices either way), and throws the same
@@ -165,10 +205,12 @@ void Workspace<Scalar>::report(const Mesh& mesh, Purpose purpose) {
 }
 
 template <class Scalar>
-std::vector<HingeCoefficients<Scalar>> Workspace<Scalar>::rest_state(const Mesh& rest, const EnergyParameters& parameters,
-                                                                     int threads) {
-  check_mesh_size(rest, "rest");
+std::vector<HingeCoefficients<Scalar>> Workspace<Scalar>::rest_state(const Mesh& rest_given,
+                                                                     const EnergyParameters& parameters, int threads) {
+  check_mesh_size(rest_given, "rest");
   threads = std::max(threads, 1);
+  int p = 0;  // the coefficients are scale-invariant: nothing to scale back
+  const Mesh& rest = normalized(rest_given, p);
   face_pass(rest, threads, "rest");
   std::vector<HingeCoefficients<Scalar>> coefficients(topology_->hinges.size());
   want_theta_ = true;
@@ -191,10 +233,12 @@ std::vector<HingeCoefficients<Scalar>> Workspace<Scalar>::rest_state(const Mesh&
 }
 
 template <class Scalar>
-void Workspace<Scalar>::set_previous_state(std::vector<HingeCoefficients<Scalar>>& coefficients, const Mesh& previous,
-                                           int threads) {
-  check_mesh_size(previous, "previous");
+void Workspace<Scalar>::set_previous_state(std::vector<HingeCoefficients<Scalar>>& coefficients,
+                                           const Mesh& previous_given, int threads) {
+  check_mesh_size(previous_given, "previous");
   threads = std::max(threads, 1);
+  int p = 0;  // phi_hat is scale-invariant
+  const Mesh& previous = normalized(previous_given, p);
   face_pass(previous, threads, "previous");
   want_theta_ = false;
   hinge_passes(previous, threads, Purpose::previous, [&](Index h, const reference::BendAngle<Scalar>& b) {
@@ -205,12 +249,14 @@ void Workspace<Scalar>::set_previous_state(std::vector<HingeCoefficients<Scalar>
 }
 
 template <class Scalar>
-void Workspace<Scalar>::evaluate(const Mesh& deformed, const std::vector<HingeCoefficients<Scalar>>& coefficients,
+void Workspace<Scalar>::evaluate(const Mesh& deformed_given, const std::vector<HingeCoefficients<Scalar>>& coefficients,
                                   Model model, unsigned request, int threads, MeshDerivatives<Scalar>& out,
                                   std::vector<HingeCoefficients<Scalar>>* release) {
   check_fp_environment();  // the exact steps need rounding to nearest and subnormals
-  check_mesh_size(deformed, "deformed");
+  check_mesh_size(deformed_given, "deformed");
   threads = std::max(threads, 1);
+  int scale = 0;  // deformed_given = 2^scale deformed: gradient 2^-scale, Hessian 2^-2 scale, energy unchanged
+  const Mesh& deformed = normalized(deformed_given, scale);
   face_pass(deformed, threads, "deformed");  // line 8 (normals first: theta needs both of every edge)
   if (coefficients.size() != topology_->hinges.size())
     throw std::invalid_argument("assemble: one HingeCoefficients per hinge expected");
@@ -264,6 +310,13 @@ void Workspace<Scalar>::evaluate(const Mesh& deformed, const std::vector<HingeCo
     Kernels<Scalar>::assembly(deformed, pattern_, face_.data(), psi1_.data(), psi2_.data(), r, flags, values,
                                       gradient);
   });
+  if (scale != 0) {  // undone exactly (in two steps: 2^-2 scale alone may be outside double's range)
+    using std::ldexp;
+    if (gradient)
+      for (Eigen::Index i = 0; i < out.gradient.size(); ++i) gradient[i] = ldexp(gradient[i], -scale);
+    if (values)
+      for (Eigen::Index i = 0; i < out.hessian.nonZeros(); ++i) values[i] = ldexp(ldexp(values[i], -scale), -scale);
+  }
 }
 
 // Pattern::matches, the outer index arrays compared by the team.
