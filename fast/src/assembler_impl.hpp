@@ -207,6 +207,7 @@ void Workspace<Scalar>::report(const Mesh& mesh, Purpose purpose) {
 template <class Scalar>
 std::vector<HingeCoefficients<Scalar>> Workspace<Scalar>::rest_state(const Mesh& rest_given,
                                                                      const EnergyParameters& parameters, int threads) {
+  check_fp_environment();
   check_mesh_size(rest_given, "rest");
   threads = std::max(threads, 1);
   int p = 0;  // the coefficients are scale-invariant: nothing to scale back
@@ -235,6 +236,7 @@ std::vector<HingeCoefficients<Scalar>> Workspace<Scalar>::rest_state(const Mesh&
 template <class Scalar>
 void Workspace<Scalar>::set_previous_state(std::vector<HingeCoefficients<Scalar>>& coefficients,
                                            const Mesh& previous_given, int threads) {
+  check_fp_environment();
   check_mesh_size(previous_given, "previous");
   threads = std::max(threads, 1);
   int p = 0;  // phi_hat is scale-invariant

@@ -25,7 +25,7 @@ void hinge_derivatives(std::span<const std::array<double, 12>> x, std::span<Hing
   if (x.size() != out.size()) throw std::invalid_argument("hinge_derivatives: x and out differ in size");
   check_fp_environment();
   if constexpr (std::is_same_v<Scalar, double>) detail::hinge_kernel_double(x.data(), x.size(), want_hessian, out.data());
-  else for (std::size_t i = 0; i < x.size(); ++i) out[i] = hinge_derivatives<Scalar>(x[i], want_hessian);
+  else for (std::size_t i = 0; i < x.size(); ++i) detail::hinge_kernel(x[i], want_hessian, out[i]);
 }
 
 
