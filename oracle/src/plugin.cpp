@@ -22,6 +22,12 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr std::size_t kOutputs = 1 + 12 + 144;  // theta, grad, hess
 
+// The child's answer to one case: the plugin's return value and its outputs.
+struct Answer {
+  std::int32_t status;
+  double out[kOutputs];
+};
+
 // Reads exactly n bytes before `deadline`: 1 when done, 0 at the end of the stream (the child is gone), -1
 // when the deadline passed first.
 int read_all(int fd, void* buffer, std::size_t n, Clock::time_point deadline) {
@@ -81,10 +87,7 @@ bool write_all(int fd, const void* buffer, std::size_t n) {
   for (;;) {
     double x[12];
     if (read_all(fd, x, sizeof x, Clock::time_point::max()) != 1) ::_exit(0);
-    struct {
-      std::int32_t status;
-      double out[kOutputs];
-    } answer;
+    Answer answer;
     for (double& v : answer.out) v = std::numeric_limits<double>::quiet_NaN();  // unwritten: non-finite
     answer.status = function(x, &answer.out[0], &answer.out[1], &answer.out[13]);
     if (!write_all(fd, &answer.status, sizeof answer.status) || !write_all(fd, answer.out, sizeof answer.out)) ::_exit(0);
@@ -171,10 +174,7 @@ CandidateResult Plugin::operator()(const std::array<double, 12>& x) {
   CandidateResult r;
   r.status = CandidateResult::Status::error;
   if (child_ < 0) start();  // after a crash or a time-out
-  struct {
-    std::int32_t status;
-    double out[kOutputs];
-  } answer;
+  Answer answer;
   const auto deadline = std::chrono::time_point_cast<Clock::duration>(Clock::now() + std::chrono::duration<double>(timeout_));
   int got = write_all(socket_, x.data(), sizeof(double) * 12) ? 1 : 0;
   if (got == 1) got = read_all(socket_, &answer.status, sizeof answer.status, deadline);
