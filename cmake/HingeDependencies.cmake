@@ -2,16 +2,10 @@
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(Boost 1.74 REQUIRED) # header-only: Boost.Multiprecision
 
-# MPFR and GMP (Boost.Multiprecision's mpfr_float and mpfi_float back ends) and MPFI ship no CMake config.
-find_path(HINGE_MPFR_INCLUDE_DIR mpfr.h REQUIRED)
-find_library(HINGE_MPFR_LIBRARY mpfr REQUIRED)
-find_library(HINGE_GMP_LIBRARY gmp REQUIRED)
-find_library(HINGE_MPFI_LIBRARY mpfi REQUIRED)
-# QD (libqd-dev): dd_real and qd_real, configured in hinge/reference/scalar.hpp.
-find_path(HINGE_QD_INCLUDE_DIR qd/dd_real.h REQUIRED)
-find_library(HINGE_QD_LIBRARY qd REQUIRED)
-find_library(HINGE_QUADMATH_LIBRARY quadmath
-             HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES} REQUIRED)
+# GMP, MPFR, MPFI, QD and libquadmath ship no CMake configuration: imported targets from
+# cmake/FindHingeSystemLibraries.cmake (GMP::gmp, GMP::gmpxx, MPFR::mpfr, MPFI::mpfi, QD::qd,
+# Quadmath::quadmath), which the installed package uses too.
+find_package(HingeSystemLibraries REQUIRED)
 
 find_package(nlohmann_json 3.11 REQUIRED) # hinge::io's JSON Lines
 if(HINGE_BUILD_TOOLS OR HINGE_BUILD_TESTS)

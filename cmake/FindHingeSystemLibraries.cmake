@@ -1,0 +1,36 @@
+# FindHingeSystemLibraries: the C libraries hinge links that ship no CMake configuration (Debian 12:
+# libgmp-dev, libmpfr-dev, libmpfi-dev, libqd-dev, and GCC's libquadmath), as imported targets found on
+# the machine where they are used, so that neither the build nor the installed package bakes in a path:
+#   GMP::gmp  GMP::gmpxx  MPFR::mpfr  MPFI::mpfi  QD::qd  Quadmath::quadmath
+# Used by the build (cmake/HingeDependencies.cmake) and by the installed hingeConfig.cmake
+# (find_dependency). Sets HingeSystemLibraries_FOUND.
+include(FindPackageHandleStandardArgs)
+
+# hinge_system_library(TARGET HEADER LIBRARY [DEPENDS target...]): TARGET from HEADER and LIBRARY.
+function(hinge_system_library target header library)
+  cmake_parse_arguments(arg "" "" "DEPENDS;HINTS" ${ARGN})
+  string(MAKE_C_IDENTIFIER "${target}" var)
+  find_path(${var}_INCLUDE_DIR ${header} HINTS ${arg_HINTS})
+  find_library(${var}_LIBRARY ${library} HINTS ${arg_HINTS})
+  mark_as_advanced(${var}_INCLUDE_DIR ${var}_LIBRARY)
+  if(${var}_INCLUDE_DIR AND ${var}_LIBRARY AND NOT TARGET ${target})
+    add_library(${target} UNKNOWN IMPORTED)
+    set_target_properties(${target} PROPERTIES IMPORTED_LOCATION "${${var}_LIBRARY}"
+                          INTERFACE_INCLUDE_DIRECTORIES "${${var}_INCLUDE_DIR}"
+                          INTERFACE_LINK_LIBRARIES "${arg_DEPENDS}")
+  endif()
+  set(HingeSystemLibraries_REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS} ${var}_INCLUDE_DIR ${var}_LIBRARY
+      PARENT_SCOPE)
+endfunction()
+
+set(HingeSystemLibraries_REQUIRED_VARS)
+hinge_system_library(GMP::gmp gmp.h gmp)
+hinge_system_library(GMP::gmpxx gmpxx.h gmpxx DEPENDS GMP::gmp)
+hinge_system_library(MPFR::mpfr mpfr.h mpfr DEPENDS GMP::gmp)
+hinge_system_library(MPFI::mpfi mpfi.h mpfi DEPENDS MPFR::mpfr)
+hinge_system_library(QD::qd qd/dd_real.h qd)
+# libquadmath lives in GCC's own directories, which the compiler searches implicitly.
+hinge_system_library(Quadmath::quadmath quadmath.h quadmath
+                     HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES} ${CMAKE_CXX_IMPLICIT_INCLUDE_DIRECTORIES})
+
+find_package_handle_standard_args(HingeSystemLibraries REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS})
