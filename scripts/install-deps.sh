@@ -18,6 +18,11 @@ packages=(
   python3-sympy                 # symbolic checks in proofs/, the symbolic method's code generator
   python3-matplotlib            # hinge study's plots (study/plot_study.py)
   clang libclang-rt-14-dev      # libFuzzer: the fuzz preset (tests/fuzz, docs/testing.md)
+  pkg-config                    # the installed package's hinge.pc, tested by tests/package
+  python3-dev python3-pybind11  # the Python module (python/, docs/python.md)
+  python3-numpy python3-scipy   # its arrays and sparse matrices
+  python3-pytest                # its tests (tests/python)
+  python3-dask python3-distributed  # python3 -m hinge.distributed (docs/scale-out.md)
 )
 
 missing=()

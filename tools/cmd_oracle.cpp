@@ -5,12 +5,12 @@
 // printed as the double nearest to its enclosure's midpoint and flagged on its line with the enclosure
 // ("uncertified"), and counted on standard error: never silently rounded.
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "hinge/io/jsonl.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
+#include "hinge/oracle/output_line.hpp"
 #include "hinge_stream.hpp"
 #include "mesh_job.hpp"
 #include "progress.hpp"
@@ -27,27 +27,6 @@ struct OracleOptions {
   MeshOptions mesh;
 };
 
-// The result line of hinge eval, with the oracle's extra fields before the closing brace.
-std::string certified_line(const std::string& id_json, const oracle::CertifiedTheta& c, bool report_precision) {
-  reference::RoundedTheta r;
-  r.theta = c.theta;
-  r.grad = c.grad;
-  r.hess = c.hess;
-  std::string line = io::result_line(id_json, r);
-  line.pop_back();  // '}'
-  if (report_precision)
-    line += ", \"bits\": " + std::to_string(c.bits) + ", \"exact_bits\": " + std::to_string(c.exact_bits) +
-            ", \"ties\": " + std::to_string(c.ties) + ", \"decided_exactly\": " + std::to_string(c.decided_exactly);
-  if (!c.uncertified.empty()) {
-    nlohmann::json flags = nlohmann::json::array();
-    for (const auto& u : c.uncertified)
-      flags.push_back({{"output", u.output}, {"enclosure", {u.lower, u.upper}}});
-    line += ", \"uncertified\": " + flags.dump();
-  }
-  line += '}';
-  return line;
-}
-
 int run_hinges(const OracleOptions& o) {
   oracle::Options options;
   options.start_bits = o.start_bits;
@@ -60,7 +39,7 @@ int run_hinges(const OracleOptions& o) {
           ++flagged_hinges;
           flagged_outputs += c.uncertified.size();
         }
-        return certified_line(id_json, c, o.report_precision);
+        return oracle::certified_line(id_json, c, o.report_precision);
       });
   if (flagged_outputs > 0)
     std::cerr << "hinge oracle: " << flagged_outputs << " output(s) in " << flagged_hinges

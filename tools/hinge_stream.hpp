@@ -11,7 +11,6 @@
 #include "commands.hpp"
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/jsonl.hpp"
-#include "hinge/reference/errors.hpp"
 #include "progress.hpp"
 
 namespace hinge::tools {
@@ -34,32 +33,15 @@ class HingeStream {
   std::ostream* out_ = &std::cout;
 };
 
-// Reads hinges from `input`, writes write(id_json, x) for each valid line to `output` (an InputError or a
-// DomainError it throws becomes that hinge's error line; an invalid line gets its invalid-line object).
-// Returns the exit status: 0 when every line was read, 1 on an I/O failure.
+// Reads hinges from `input`, writes write(id_json, x) for each valid line to `output`
+// (io::transform_hinge_lines). Returns the exit status: 0 when every line was read, 1 on an I/O failure.
 template <class Write>
 int run_hinge_stream(const std::string& input, const std::string& output, const std::string& what, Write&& write) {
   HingeStream stream(input, output, what);
   if (!stream.open()) return exit_invalid_input;
   Progress progress("hinge " + what + ": hinges", 0);
   std::size_t count = 0;
-  io::for_each_hinge_line(stream.in(), [&](const io::HingeLine& line) {
-    std::string text;
-    if (!line.x) {
-      text = io::invalid_line(line);
-    } else {
-      try {
-        text = write(line.id_json, *line.x);
-      } catch (const InputError& e) {
-        text = io::error_line(line.id_json, e.what());
-      } catch (const DomainError& e) {
-        text = io::error_line(line.id_json, e.what());
-      }
-    }
-    text += '\n';
-    stream.out().write(text.data(), static_cast<std::streamsize>(text.size()));
-    progress.update(++count);
-  });
+  io::transform_hinge_lines(stream.in(), stream.out(), 1, write, [&] { progress.update(++count); });
   return stream.finish();
 }
 

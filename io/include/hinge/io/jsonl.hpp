@@ -29,9 +29,18 @@ std::string result_line(const std::string& id_json, const reference::RoundedThet
 std::string error_line(const std::string& id_json, const std::string& error);
 std::string invalid_line(const HingeLine& line);
 
-// Calls f(HingeLine) for every non-blank line of `in`.
+// Calls f(HingeLine) for every non-blank line of `in`, whose first line is numbered `first_line` (a shard
+// of a larger file starts at its own line number).
 template <class F>
-void for_each_hinge_line(std::istream& in, F&& f);
+void for_each_hinge_line(std::istream& in, F&& f, long first_line = 1);
+
+// The loop of `hinge eval` and `hinge oracle` (and of their shards on a cluster): one output line per
+// non-blank input line of `in`, in order, to `out`: write(id_json, x) for a valid line (an InputError or
+// DomainError it throws becomes that hinge's error line), the invalid-line object for any other;
+// after_line() after each. Lines are numbered from `first_line`.
+template <class Write, class AfterLine>
+void transform_hinge_lines(std::istream& in, std::ostream& out, long first_line, Write&& write,
+                           AfterLine&& after_line);
 
 // `s` as a JSON string, quotes and escapes included (invalid UTF-8 replaced).
 std::string json_string(const std::string& s);
@@ -42,13 +51,41 @@ bool blank(const std::string& text);
 }  // namespace hinge::io
 
 #include <istream>
+#include <ostream>
+
+#include "hinge/reference/errors.hpp"
 
 template <class F>
-void hinge::io::for_each_hinge_line(std::istream& in, F&& f) {
+void hinge::io::for_each_hinge_line(std::istream& in, F&& f, long first_line) {
   std::string text;
-  long number = 0;
+  long number = first_line - 1;
   while (std::getline(in, text)) {
     ++number;
     if (!blank(text)) f(parse_hinge_line(text, number));
   }
+}
+
+template <class Write, class AfterLine>
+void hinge::io::transform_hinge_lines(std::istream& in, std::ostream& out, long first_line, Write&& write,
+                                      AfterLine&& after_line) {
+  for_each_hinge_line(
+      in,
+      [&](const HingeLine& line) {
+        std::string text;
+        if (!line.x) {
+          text = invalid_line(line);
+        } else {
+          try {
+            text = write(line.id_json, *line.x);
+          } catch (const InputError& e) {
+            text = error_line(line.id_json, e.what());
+          } catch (const DomainError& e) {
+            text = error_line(line.id_json, e.what());
+          }
+        }
+        text += '\n';
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        after_line();
+      },
+      first_line);
 }

@@ -1,0 +1,16 @@
+// hinge/oracle/output_line.hpp: a certified result as a line of `hinge oracle` (docs/contract.md): the
+// result line of `hinge eval`, then the oracle's own fields.
+#pragma once
+
+#include <string>
+
+#include "hinge/oracle/oracle.hpp"
+
+namespace hinge::oracle {
+
+// {"id", "theta", "grad", "hess"} (without the newline), then with `report_precision` "bits",
+// "exact_bits", "ties", "decided_exactly", then, if any output could not be certified, "uncertified":
+// [{"output", "enclosure": [lower, upper]}].
+std::string certified_line(const std::string& id_json, const CertifiedTheta& c, bool report_precision);
+
+}  // namespace hinge::oracle
