@@ -1,6 +1,6 @@
 // hinge conform: check another implementation against certified values (docs/contract.md; docs/conformance.md).
 //   hinge conform --inputs [--output FILE]                       the conformance inputs {"id", "category", "x"}
-//   hinge conform --candidate FILE                               outputs in the hinge eval format, same ids
+//   hinge conform --candidate FILE [--json FILE]                 outputs in the hinge eval format, same ids
 //   hinge conform --plugin LIB.so [--symbol NAME] [--save FILE]  a C function (hinge/candidate.h)
 //   hinge conform --method M [--scalar S] [--save FILE]          one of hinge eval's methods, in process
 //   hinge conform --mesh X.obj [--rest R.obj] --energy E --k K --hessian H.mtx [--gradient G.txt]
@@ -36,6 +36,7 @@ namespace conf = oracle::conformance;
 struct ConformOptions {
   bool inputs = false, verbose = false;
   std::string output, candidate, plugin, symbol = "hinge_candidate", save, write_vectors, method, scalar = "double";
+  std::string json;  // --json FILE: the report as JSON
   std::vector<std::string> categories;
   conf::Policy policy;
   double case_timeout = 10;  // seconds, --plugin
@@ -117,8 +118,9 @@ int run_cases(const ConformOptions& o) {
   } catch (const conf::PluginError& e) {
     throw Unusable(e.what());
   }
-  std::optional<io::AtomicFile> saved;
+  std::optional<io::AtomicFile> saved, json;
   if (!o.save.empty()) saved.emplace(o.save);
+  if (!o.json.empty()) json.emplace(o.json);
 
   const std::vector<conf::Case> cases = selected_inputs(o);
   std::vector<conf::CaseOutcome> outcomes;
@@ -146,6 +148,10 @@ int run_cases(const ConformOptions& o) {
     std::cerr << "hinge conform: " << unknown << " line(s) of the candidate have ids that are not conformance cases (ignored)\n";
   if (o.verbose) print_cases(std::cout, outcomes);
   const bool pass = conf::print_report(std::cout, outcomes, o.policy, name);
+  if (json) {
+    conf::write_json_report(json->stream(), outcomes, o.policy, name);
+    json->commit();
+  }
   if (!not_survived.empty()) {
     std::cout << "\nthe plugin did not survive " << not_survived.size() << " case(s) (each failed; its process was started again):\n";
     for (const auto& line : not_survived) std::cout << "  " << line << "\n";
@@ -247,6 +253,8 @@ Action add_conform(CLI::App& app) {
   cmd->add_option("--method", o->method, "Check one of hinge eval's methods: reference, fast, autodiff, symbolic");
   cmd->add_option("--scalar", o->scalar, "With --method: its scalar type")->capture_default_str();
   cmd->add_option("--save", o->save, "With --plugin or --method: also write its outputs in the hinge eval format");
+  cmd->add_option("--json", o->json, "With --candidate, --plugin or --method: also write the report as JSON here "
+                                      "(per category and per case: errors, tolerances, kappa, tier)");
   cmd->add_option("--category", o->categories, "Only these categories (repeatable)");
   cmd->add_flag("--verbose", o->verbose, "Also print every case's errors and tolerances");
   cmd->add_option("--tolerance-base", o->policy.base, "Tolerance policy: units of 2^-53 granted to every case")
@@ -262,8 +270,9 @@ Action add_conform(CLI::App& app) {
   cmd->footer(
       "Reports, per category, the median and worst normwise error of theta, grad and hess in units of 2^-53,\n"
       "the worst case (largest error / tolerance), missing and non-finite results. A case passes when each\n"
-      "output's error is at most base + c kappa (docs/conformance.md). Exit: 0 pass, 1 fail, 2 usage error or\n"
-      "unreadable candidate.");
+      "output's error is at most base + c kappa (docs/conformance.md), and the tier each category reaches:\n"
+      "correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), policy, fail. Exit: 0 pass, 1 fail, 2 usage\n"
+      "error or unreadable candidate.");
   return [o]() -> int {
     const int modes = int(o->inputs) + int(!o->candidate.empty()) + int(!o->plugin.empty()) + int(!o->method.empty()) +
                       int(!o->write_vectors.empty()) + int(!o->mesh.empty());
@@ -273,6 +282,10 @@ Action add_conform(CLI::App& app) {
     }
     if (!o->save.empty() && o->plugin.empty() && o->method.empty()) {
       std::cerr << "hinge conform: --save goes with --plugin or --method\n";
+      return exit_usage;
+    }
+    if (!o->json.empty() && o->candidate.empty() && o->plugin.empty() && o->method.empty()) {
+      std::cerr << "hinge conform: --json goes with --candidate, --plugin or --method\n";
       return exit_usage;
     }
     try {

@@ -1,7 +1,9 @@
-// hinge eval [--method M] [--scalar S] [--input FILE] [--output FILE] (docs/contract.md).
+// hinge eval [--method M] [--scalar S] [--cond] [--input FILE] [--output FILE] (docs/contract.md).
 #include "commands.hpp"
 #include "hinge/io/jsonl.hpp"
+#include "hinge/io/number.hpp"
 #include "hinge/methods/methods.hpp"
+#include "hinge/oracle/conformance.hpp"
 #include "hinge_stream.hpp"
 
 namespace hinge::tools {
@@ -10,11 +12,15 @@ Action add_eval(CLI::App& app) {
   auto* cmd = app.add_subcommand("eval", "Evaluate theta, its gradient and Hessian for hinges given as JSON Lines");
   struct Options {
     std::string method = "reference", scalar = "double", input, output;
+    bool cond = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--method", o->method, "Evaluation method: reference, fast, autodiff, symbolic")->capture_default_str();
   cmd->add_option("--scalar", o->scalar,
                   "Scalar type: float, double, long-double, dd, qd, float128, bin128, mpfr:BITS")->capture_default_str();
+  cmd->add_flag("--cond", o->cond,
+                "Add to each result \"kappa\": {\"theta\", \"grad\", \"hess\"}, the condition numbers of the tolerance "
+                "policy, L ||J_f||_F / ||f||_2 (docs/conformance.md), from the certified values");
   cmd->add_option("--input", o->input, "Input JSON Lines file (default: standard input)");
   cmd->add_option("--output", o->output, "Output JSON Lines file (default: standard output)");
   cmd->footer(
@@ -25,7 +31,14 @@ Action add_eval(CLI::App& app) {
     const ScalarType scalar = parse_scalar_type(o->scalar);  // std::invalid_argument: usage error
     const methods::Method method = methods::parse_method(o->method);
     return run_hinge_stream(o->input, o->output, "eval", [&](const std::string& id_json, const std::array<double, 12>& x) {
-      return io::result_line(id_json, methods::evaluate_hinge(method, scalar, x));
+      std::string line = io::result_line(id_json, methods::evaluate_hinge(method, scalar, x));
+      if (o->cond) {
+        const auto kappa = oracle::conformance::expected({"", "", x}).conditioning.kappa;
+        line.pop_back();  // '}'
+        line += ", \"kappa\": {\"theta\": " + io::format_double(kappa[0]) + ", \"grad\": " +
+                io::format_double(kappa[1]) + ", \"hess\": " + io::format_double(kappa[2]) + "}}";
+      }
+      return line;
     });
   };
 }

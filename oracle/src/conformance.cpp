@@ -7,6 +7,7 @@
 #include <limits>
 #include <ostream>
 #include <span>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "hinge/oracle/conformance.hpp"
@@ -236,7 +237,27 @@ CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& p
     }
   }
   o.pass = o.ratio <= 1;
+  bool equal = true;
+  for (int g = 0; g < 3; ++g)
+    for (std::size_t i = 0; i < group_size[g]; ++i) equal = equal && group_data(r, g)[i] == group_data(e.values, g)[i];
+  const double worst = std::max({o.error[0], o.error[1], o.error[2]});
+  o.tier = !o.pass ? Tier::fail
+           : equal ? Tier::correctly_rounded
+           : worst <= 1 ? Tier::faithful
+           : worst <= 4 ? Tier::four_units
+                        : Tier::policy;
   return o;
+}
+
+const char* tier_name(Tier t) {
+  switch (t) {
+    case Tier::correctly_rounded: return "correctly-rounded";
+    case Tier::faithful: return "faithful";
+    case Tier::four_units: return "4u";
+    case Tier::policy: return "policy";
+    case Tier::fail: return "fail";
+  }
+  return "?";
 }
 
 std::vector<CategorySummary> summarize(const std::vector<CaseOutcome>& outcomes) {
@@ -251,6 +272,7 @@ std::vector<CategorySummary> summarize(const std::vector<CaseOutcome>& outcomes)
       if (o.status == CandidateResult::Status::missing || o.status == CandidateResult::Status::error) ++s.missing;
       if (o.status == CandidateResult::Status::nonfinite) ++s.nonfinite;
       if (!o.pass) ++s.failed;
+      s.tier = std::max(s.tier, o.tier);
       for (int g = 0; g < 3; ++g) errors[g].push_back(o.error[g]);
       if (s.worst_id.empty() || o.ratio > s.worst_ratio) {
         s.worst_ratio = o.ratio;
@@ -278,16 +300,16 @@ bool print_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, c
       << "normwise errors in units of 2^-53 (median / worst); tolerance per case and output: " << fixed(policy.base, 0)
       << " + " << fixed(policy.c, 0) << " kappa (docs/conformance.md)\n\n";
   char line[512];
-  std::snprintf(line, sizeof line, "%-18s %5s %7s %9s  %-19s %-19s %-19s %-6s %s\n", "category", "cases", "missing",
-                "nonfinite", "theta", "grad", "hess", "result", "worst case (error / tolerance)");
+  std::snprintf(line, sizeof line, "%-18s %5s %7s %9s  %-19s %-19s %-19s %-6s %-17s %s\n", "category", "cases",
+                "missing", "nonfinite", "theta", "grad", "hess", "result", "tier", "worst case (error / tolerance)");
   out << line;
   bool all = true;
   for (const CategorySummary& s : summary) {
     auto pair = [](double a, double b) { return fixed(a) + " / " + fixed(b); };
-    std::snprintf(line, sizeof line, "%-18s %5d %7d %9d  %-19s %-19s %-19s %-6s %s (%s)\n", s.category.c_str(), s.cases,
-                  s.missing, s.nonfinite, pair(s.median[0], s.worst[0]).c_str(), pair(s.median[1], s.worst[1]).c_str(),
-                  pair(s.median[2], s.worst[2]).c_str(), s.pass ? "pass" : "FAIL", s.worst_id.c_str(),
-                  fixed(s.worst_ratio, 2).c_str());
+    std::snprintf(line, sizeof line, "%-18s %5d %7d %9d  %-19s %-19s %-19s %-6s %-17s %s (%s)\n", s.category.c_str(),
+                  s.cases, s.missing, s.nonfinite, pair(s.median[0], s.worst[0]).c_str(),
+                  pair(s.median[1], s.worst[1]).c_str(), pair(s.median[2], s.worst[2]).c_str(), s.pass ? "pass" : "FAIL",
+                  tier_name(s.tier), s.worst_id.c_str(), fixed(s.worst_ratio, 2).c_str());
     out << line;
     all = all && s.pass;
   }
@@ -305,9 +327,41 @@ bool print_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, c
         << " (kappa " << fixed(o.kappa[o.group], 2) << "); largest difference at " << entry_name(o.group, o.entry)
         << ": expected " << exact(o.expected_value) << ", got " << exact(o.candidate_value) << '\n';
   }
+  out << "tiers (docs/conformance.md): correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), policy, fail: the\n"
+         "tier each category's every case reaches\n";
   out << (all ? "PASS: every category is within the tolerance policy\n"
               : "FAIL: the candidate is outside the tolerance policy (exit status 1)\n");
   return all;
+}
+
+void write_json_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, const Policy& policy,
+                       const std::string& candidate) {
+  // Non-finite numbers (the error of a missing result) are written as null: JSON has no infinity.
+  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  auto groups = [&](const std::array<double, 3>& v) {
+    return nlohmann::json{{"theta", number(v[0])}, {"grad", number(v[1])}, {"hess", number(v[2])}};
+  };
+  const std::vector<CategorySummary> summary = summarize(outcomes);
+  nlohmann::json report;
+  report["candidate"] = candidate;
+  report["policy"] = {{"base", policy.base}, {"c", policy.c}};
+  report["units"] = "normwise error in units of 2^-53";
+  bool all = true;
+  report["categories"] = nlohmann::json::array();
+  for (const CategorySummary& s : summary) {
+    all = all && s.pass;
+    report["categories"].push_back({{"category", s.category}, {"cases", s.cases}, {"missing", s.missing},
+                                    {"nonfinite", s.nonfinite}, {"failed", s.failed}, {"median", groups(s.median)},
+                                    {"worst", groups(s.worst)}, {"worst_case", s.worst_id},
+                                    {"worst_ratio", number(s.worst_ratio)}, {"pass", s.pass}, {"tier", tier_name(s.tier)}});
+  }
+  report["pass"] = all;
+  report["cases"] = nlohmann::json::array();
+  for (const CaseOutcome& o : outcomes)
+    report["cases"].push_back({{"id", o.id}, {"category", o.category}, {"status", status_name(o.status)},
+                               {"error", groups(o.error)}, {"tolerance", groups(o.tolerance)}, {"kappa", groups(o.kappa)},
+                               {"pass", o.pass}, {"tier", tier_name(o.tier)}});
+  out << report.dump(1) << '\n';
 }
 
 }  // namespace hinge::oracle::conformance

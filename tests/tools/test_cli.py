@@ -57,6 +57,32 @@ def test_eval_double_is_within_a_few_units_of_the_oracle():
         assert num / den <= 8 * 2.0**-53, (w["id"], num / den / 2.0**-53)  # the bound for double
 
 
+def test_cond_gives_the_tolerance_policy_condition_numbers():
+    # The committed conformance vectors hold each case's certified values, L and kappa (docs/conformance.md).
+    vectors_dir = os.path.join(os.path.dirname(EXAMPLES), "..", "conformance", "hinges")
+    for category in ("short-hinge-edges", "needles", "near-flat"):
+        with open(os.path.join(vectors_dir, category + ".jsonl")) as f:
+            text = f.read()
+        want = lines(text)
+        for method in ("fast", "reference"):
+            code, out, _ = run(["eval", "--method", method, "--cond"], text)
+            got = lines(out)
+            assert code == 0 and [g["id"] for g in got] == [w["id"] for w in want]
+            for g, w in zip(got, want):
+                assert g["kappa"] == dict(zip(("theta", "grad", "hess"), w["kappa"])), w["id"]
+                assert all(math.isfinite(k) and k > 0 for k in g["kappa"].values()), w["id"]
+                # kappa_theta = L ||grad theta|| / |theta|, recomputed here from the certified values: the two
+                # evaluations of that formula in double differ by their roundings (about 16 operations), 32 ulps.
+                if w["theta"] != 0:
+                    independent = w["length"] * math.sqrt(sum(v * v for v in w["grad"])) / abs(w["theta"])
+                    assert abs(g["kappa"]["theta"] - independent) <= 32 * 2.0**-53 * independent, w["id"]
+        kappas = [g["kappa"]["hess"] for g in got]
+        if category != "near-flat":  # hard cases are ill-conditioned: kappa grows as the shape degenerates
+            assert max(kappas) > 1e9, (category, max(kappas))
+    code, out, _ = run(["eval", "--cond"], '{"id": "degenerate", "x": [0,0,0, 1,0,0, 1,0,0, 0,1,0]}\n')
+    assert code == 0 and "kappa" not in lines(out)[0] and "error" in lines(out)[0]
+
+
 def test_numbers_read_back_exactly_and_look_like_doubles():
     code, out, _ = run(["eval", "--scalar", "float128"], open(os.path.join(EXAMPLES, "eval-input.jsonl")).read())
     assert code == 0

@@ -82,8 +82,16 @@ struct Policy {
 // plugin's outputs).
 using CandidateResult = io::EvalOutput;
 
+// The accuracy a candidate reaches, best first (docs/conformance.md, "Tiers"): every output equal to
+// the certified one; every output group within 1 unit of 2^-53 (normwise, as the errors are measured);
+// within 4 units; within the tolerance policy; outside it.
+enum class Tier { correctly_rounded, faithful, four_units, policy, fail };
+// "correctly-rounded", "faithful", "4u", "policy", "fail" (docs/contract.md).
+const char* tier_name(Tier t);
+
 struct CaseOutcome {
   std::string id, category;
+  Tier tier = Tier::fail;
   CandidateResult::Status status = CandidateResult::Status::missing;
   std::array<double, 3> error{};      // normwise, units of 2^-53 (infinite when missing or non-finite)
   std::array<double, 3> tolerance{};  // base + c kappa_f
@@ -109,6 +117,7 @@ struct CategorySummary {
   std::string worst_id;                     // the case with the largest error / tolerance
   double worst_ratio = 0;
   bool pass = true;
+  Tier tier = Tier::correctly_rounded;      // the tier every case of the category reaches
 };
 
 std::vector<CategorySummary> summarize(const std::vector<CaseOutcome>& outcomes);
@@ -116,6 +125,9 @@ std::vector<CategorySummary> summarize(const std::vector<CaseOutcome>& outcomes)
 // The report of hinge conform; returns whether everything passed.
 bool print_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, const Policy& policy,
                   const std::string& candidate);
+// The same report as JSON (hinge conform --json; docs/conformance.md, "The JSON report"), every case included.
+void write_json_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, const Policy& policy,
+                       const std::string& candidate);
 
 // Mesh Hessians: normwise error of a candidate's energy Hessian (and gradient) against the certified
 // ones, in units of 2^-53, and the summation condition number kappa_sum = sum_h ||H_h||_F / ||H||_F
