@@ -48,8 +48,12 @@ struct HingeTriangle {
 namespace detail {
 
 // The type the per-triangle quantities are computed in before they are rounded to Scalar once, two
-// triangles at a time (lane 0 the upper, lane 1 the lower): two doubles for float, a pair of Scalar
-// otherwise. (double has its own kernel in lanes, src/hinge_kernel_lanes.hpp.)
+// triangles at a time (lane 0 the upper, lane 1 the lower): two doubles for float; two double-doubles
+// for long double (DD2: the double kernel's arithmetic, exact differences and error-free products, about
+// 106 bits against long double's 64, so that long double beats the conditioning of needles and short
+// hinge edges as double does: docs/numerics.md); a pair of Scalar otherwise (float128, bin128, mpfr,
+// dd, qd: the differences of the input doubles are exact in them within an exponent gap of p - 53 bits).
+// (double has its own kernel in lanes, src/hinge_kernel_lanes.hpp.)
 template <class W>
 struct Pair {
   W v[2];
@@ -60,9 +64,14 @@ struct Pair {
   friend HINGE_FAST_INLINE Pair operator*(const Pair& a, const Pair& b) { return {{a[0] * b[0], a[1] * b[1]}}; }
   friend HINGE_FAST_INLINE Pair operator-(const Pair& a) { return {{-a[0], -a[1]}}; }
 };
+using DD2 = DoubleDoubleOf<Lanes2>;
 template <class Scalar> struct WideOf { using type = Pair<Scalar>; };
 template <> struct WideOf<float> { using type = Lanes2; };
+template <> struct WideOf<long double> { using type = DD2; };
 template <class Scalar> using Wide = typename WideOf<Scalar>::type;
+// Whether W's range is double's (float's and long double's kernels): the kernel then checks in_range()
+// and falls back to wide_range_kernel outside it.
+template <class W> inline constexpr bool kDoubleRange = std::is_same_v<W, Lanes2> || std::is_same_v<W, DD2>;
 
 template <class W> using Vec = std::array<W, 3>;
 
@@ -109,17 +118,27 @@ HINGE_FAST_INLINE Vec<W> cross(const Vec<W>& a, const Vec<W>& b) {
 template <class W>
 HINGE_FAST_INLINE W inverse_sqrt(const W& a) {
   if constexpr (std::is_same_v<W, Lanes2>) return splat<Lanes2>(1) / root(a);
-  else {
+  else if constexpr (std::is_same_v<W, DD2>) {
+    // y = 1 / sqrt(a.hi) to a few units of 2^-53, then Newton's step as a factor (rsqrt_correction): y (1 +
+    // h), relative error ~2^-100.
+    const Lanes2 y = splat<Lanes2>(1) / root(a.hi);
+    return fast_two_sum(y, y * rsqrt_correction(a, y));
+  } else {
     using std::sqrt;
     using E = std::remove_cvref_t<decltype(a[0])>;
     return W{{E(1) / sqrt(a[0]), E(1) / sqrt(a[1])}};
   }
 }
 
-// a b rounded to Scalar once, lane by lane.
+// a b rounded to Scalar once, lane by lane (DD2: the double-double product, relative error ~2^-104,
+// then hi + lo rounded to long double).
 template <class Scalar, class W>
 HINGE_FAST_INLINE std::array<Scalar, 2> product_rounded(const W& a, const W& b) {
-  if constexpr (std::is_same_v<W, Lanes2>) {
+  if constexpr (std::is_same_v<W, DD2>) {
+    const DD2 r = a * b;
+    return {static_cast<Scalar>(static_cast<Scalar>(r.hi[0]) + static_cast<Scalar>(r.lo[0])),
+            static_cast<Scalar>(static_cast<Scalar>(r.hi[1]) + static_cast<Scalar>(r.lo[1]))};
+  } else if constexpr (std::is_same_v<W, Lanes2>) {
     const Lanes2 r = a * b;
     return {static_cast<Scalar>(r[0]), static_cast<Scalar>(r[1])};
   } else {
@@ -130,7 +149,9 @@ HINGE_FAST_INLINE std::array<Scalar, 2> product_rounded(const W& a, const W& b) 
 // x_a - x_b (lane 0) and x_c - x_d (lane 1) of the input doubles, in W.
 template <class W>
 HINGE_FAST_INLINE W difference(double xa, double xb, double xc, double xd) {
-  if constexpr (std::is_same_v<W, Lanes2>) {
+  if constexpr (std::is_same_v<W, DD2>) {
+    return two_diff(Lanes2{xa, xc}, Lanes2{xb, xd});  // exact
+  } else if constexpr (std::is_same_v<W, Lanes2>) {
     return Lanes2{xa, xc} - Lanes2{xb, xd};
   } else {
     using E = std::remove_cvref_t<decltype(std::declval<W>()[0])>;
@@ -141,7 +162,8 @@ HINGE_FAST_INLINE W difference(double xa, double xb, double xc, double xd) {
 // Lane i of a wide value, as a double (its high part) for the filters.
 template <class W>
 HINGE_FAST_INLINE double high_part(const W& a, int i) {
-  if constexpr (std::is_same_v<W, Lanes2>) return a[i];
+  if constexpr (std::is_same_v<W, DD2>) return a.hi[i];
+  else if constexpr (std::is_same_v<W, Lanes2>) return a[i];
   else return to_double(a[i]);
 }
 
@@ -179,7 +201,9 @@ HINGE_FAST_INLINE double high_part(const W& a, int i) {
 // After rescaling (M in [1, 2)) the same bounds hold a fortiori.
 template <class W>
 HINGE_FAST_INLINE bool in_range(const W& L0, const W& S, double P2) {
-  if constexpr (std::is_same_v<W, Lanes2>) {
+  if constexpr (std::is_same_v<W, DD2>) {
+    return in_range(L0.hi, S.hi, P2);
+  } else if constexpr (std::is_same_v<W, Lanes2>) {
     const Lanes2 s = (S * P2) * P2, lambda = L0 * P2;
     return s[0] >= 0x1p-140 && s[1] >= 0x1p-140 && lambda[0] >= 0x1p-500;
   } else {
@@ -284,7 +308,24 @@ template <class W>
 HINGE_FAST_INLINE void scale_by_power_of_two(W& a, int k) {
   using std::ldexp;  // QD's for dd and qd
   for (int l = 0; l < 2; ++l) {
-    a[l] = ldexp(a[l], k);
+    if constexpr (std::is_same_v<W, DD2>) {
+      a.hi[l] = ldexp(a.hi[l], k);
+      a.lo[l] = ldexp(a.lo[l], k);
+    } else {
+      a[l] = ldexp(a[l], k);
+    }
+  }
+}
+
+// Lane 0 plus `sign` times lane 1 of a wide value, rounded to Scalar once (for n - n~ and n + n~).
+template <class Scalar, class W>
+HINGE_FAST_INLINE Scalar lanes_combined(const W& a, double sign) {
+  if constexpr (std::is_same_v<W, DD2>) {
+    const DoubleDoubleOf<double> s = two_sum(a.hi[0], sign * a.hi[1]);
+    const double low = s.lo + (a.lo[0] + sign * a.lo[1]);
+    return static_cast<Scalar>(static_cast<Scalar>(s.hi) + static_cast<Scalar>(low));
+  } else {
+    return static_cast<Scalar>(sign > 0 ? a[0] + a[1] : a[0] - a[1]);
   }
 }
 
@@ -374,8 +415,8 @@ void wide_range_kernel(const std::array<double, 12>& x, bool want_hessian, Hinge
 // `kExactCross` (long double only): the normals from exact_cross (wide_range_kernel).
 template <class Scalar, bool kExactCross = false>
 HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<Scalar>& out) {
-  using W = Wide<Scalar>;
-  constexpr bool kRanged = std::is_same_v<W, Lanes2>;
+  using W = std::conditional_t<kExactCross, Pair<long double>, Wide<Scalar>>;
+  constexpr bool kRanged = kDoubleRange<W>;
   static_assert(!kExactCross || std::is_same_v<W, Pair<long double>>);
   double probe = 0;  // NaN when a coordinate is not finite
   for (double c : x) probe += c * 0.0;
@@ -465,8 +506,8 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   const int sign = orientation(x, p, q, r);
   Vec<Scalar> minus, plus;
   for (int k = 0; k < 3; ++k) {
-    minus[k] = static_cast<Scalar>(nw[k][0] + nw[k][1]);
-    plus[k] = static_cast<Scalar>(nw[k][0] - nw[k][1]);
+    minus[k] = lanes_combined<Scalar>(nw[k], 1);
+    plus[k] = lanes_combined<Scalar>(nw[k], -1);
   }
   using std::atan2;
   using std::sqrt;
