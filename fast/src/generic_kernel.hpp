@@ -544,16 +544,12 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
     if (!fast_range) [[unlikely]] wide_range_kernel(x, want_hessian, out);  // the same checks passed above
 }
 
-// The fallback of the double and float kernels for hinges outside in_range(): the kernel in long
-// double with the normals' cross products exact (exact_cross; the other quantities from the edges rounded
-// to long double: relative errors ~2^-64 each, no cancellation beyond the problem's own), every result
-// rounded to Scalar once. Not inlined: it is rare, and large.
+// The results of a long double evaluation `w` rounded to Scalar once, into `out` (on the branch cut theta
+// is set as the kernel sets it, not pi rounded twice).
 template <class Scalar>
-[[gnu::noinline]] void wide_range_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<Scalar>& out) {
-  HingeDerivatives<long double> w;
-  hinge_kernel<long double, true>(x, want_hessian, w);
+void round_into(const HingeDerivatives<long double>& w, HingeDerivatives<Scalar>& out) {
   out.on_branch_cut = w.on_branch_cut;
-  if (w.on_branch_cut) {  // exactly as the kernel sets it, not pi rounded twice
+  if (w.on_branch_cut) {
     out.theta = pi_of<Scalar>();
     out.tan_half_theta = std::numeric_limits<Scalar>::infinity();
   } else {
@@ -562,6 +558,27 @@ template <class Scalar>
   }
   out.grad = w.grad.template cast<Scalar>();
   out.hess = w.hess.template cast<Scalar>();
+}
+
+// The fallback of the double and float kernels for hinges outside in_range(): the kernel in long
+// double with the normals' cross products exact (exact_cross; the other quantities from the edges rounded
+// to long double: relative errors ~2^-64 each, no cancellation beyond the problem's own), every result
+// rounded to Scalar once. Not inlined: it is rare, and large.
+template <class Scalar>
+[[gnu::noinline]] void wide_range_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<Scalar>& out) {
+  HingeDerivatives<long double> w;
+  hinge_kernel<long double, true>(x, want_hessian, w);
+  round_into(w, out);
+}
+
+// The double kernel's accurate path for a hinge edge below 1/8 of the longest edge (hinge_kernel_lanes.hpp,
+// LanesOutcome::short_hinge_edge): the long double kernel (its stencil in double-double, DD2) rounded to
+// double once. Not inlined: rare on meshes (a well-shaped triangle's edges are all above 0.15 of its
+// longest).
+[[gnu::noinline]] inline void accurate_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
+  HingeDerivatives<long double> w;
+  hinge_kernel<long double>(x, want_hessian, w);
+  round_into(w, out);
 }
 
 }  // namespace detail

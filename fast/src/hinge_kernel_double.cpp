@@ -85,6 +85,7 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
       for (int i = 0; i < 144; ++i) out.hess.data()[i] = std::ldexp(out.hess.data()[i], -2 * o.exponent);
   }
   if (!o.fast_range) [[unlikely]] wide_range_kernel(x, want_hessian, out);  // the same checks passed above
+  else if (o.short_hinge_edge) [[unlikely]] accurate_kernel(x, want_hessian, out);
 }
 
 // The vector work of `kernels` on x, completed.

@@ -381,7 +381,105 @@ void boundary_meshes(Builder& b) {
   }
 }
 
+// --- the hard families (hard_cases) ---------------------------------------------------------------
+
+// Adds x under `family` unless it is not a valid hinge with finite certified outputs (a random draw can
+// land on one: a needle whose apex rounds onto the hinge edge, say).
+void add_if_valid(std::vector<Case>& out, const std::string& family, const std::string& tag, const X12& x) {
+  if (!valid(x)) return;
+  out.push_back({family + "/" + std::to_string(out.size()) + "-" + tag, family, x});
+}
+
+// theta's local hinge of the file comment with a small h0 (cap), a large h0 (spike), either on either
+// side, or a cap above and a spike below.
+X12 random_needle(Random& r, std::string& tag) {
+  Local l = random_well_shaped(r);
+  const int k = r.integer(2, 15);
+  const double small = power_of_ten(-k) * r.uniform(1, 2);
+  static const std::array<const char*, 6> kinds{"cap-upper", "cap-lower", "cap-both", "spike-upper", "spike-lower", "cap-spike"};
+  const std::string kind = kinds[static_cast<std::size_t>(r.integer(0, 5))];
+  if (kind == "cap-upper" || kind == "cap-both" || kind == "cap-spike") l.h0 = small;
+  if (kind == "cap-lower" || kind == "cap-both") l.h3 = small;
+  if (kind == "spike-upper") l.h0 = 1 / small, l.u0 = r.uniform(0, 1);
+  if (kind == "spike-lower" || kind == "cap-spike") l.h3 = 1 / small, l.u3 = r.uniform(0, 1);
+  tag = kind + "-1e-" + std::to_string(k);
+  return random_placement(r, l);
+}
+
 }  // namespace
+
+const std::vector<std::string>& hard_families() {
+  static const std::vector<std::string> names{"needles", "short-hinge-edges", "near-flat", "near-folded",
+                                              "folded", "offsets", "scales", "combined"};
+  return names;
+}
+
+std::vector<Case> hard_cases(std::uint64_t seed, int per_family) {
+  std::vector<Case> out;
+  Random r(seed);
+  for (int i = 0; i < per_family; ++i) {  // needles: caps and spikes down to 1e-15
+    std::string tag;
+    const X12 x = random_needle(r, tag);
+    add_if_valid(out, "needles", tag, x);
+  }
+  for (int i = 0; i < per_family; ++i) {  // hinge edges from 2^-1 to 2^-60 of the others
+    const int k = r.integer(1, 60);
+    Local l = random_well_shaped(r);
+    l.L0 = std::ldexp(r.uniform(1, 2), -k);
+    l.u0 = l.L0 * r.uniform(-1, 2), l.u3 = l.L0 * r.uniform(-1, 2);
+    // Beyond 2^-40 the hinge edge must sit near the origin to be representable apart from its neighbours.
+    const P3 offset = k > 40 ? P3{0, 0, 0} : random_point(r, 1);
+    add_if_valid(out, "short-hinge-edges", "2^-" + std::to_string(k),
+                 place(l.points(), {0, 0, 0}, random_rotation(r), 1, offset));
+  }
+  for (int i = 0; i < per_family; ++i) {  // |theta| from 1e-1 to 1e-15
+    const int k = r.integer(1, 15);
+    Local l = random_well_shaped(r);
+    l.set_psi(r.sign() * power_of_ten(-k) * r.uniform(1, 2));
+    add_if_valid(out, "near-flat", "1e-" + std::to_string(k), random_placement(r, l));
+  }
+  for (int i = 0; i < per_family; ++i) {  // |theta| from pi - 1e-1 to pi - 1e-15
+    const int k = r.integer(1, 15);
+    Local l = random_well_shaped(r);
+    l.u3 = r.uniform(0.3, 0.7);
+    if (std::fabs(l.u3 - l.u0) < 0.1) l.u3 = l.u0 + 0.15;
+    l.set_folded(power_of_ten(-k) * r.uniform(1, 2), r.sign());
+    add_if_valid(out, "near-folded", "pi-1e-" + std::to_string(k), random_placement(r, l));
+  }
+  for (int i = 0; i < per_family; ++i) {  // exactly folded (theta = +pi) or flat, on lattice planes, scaled
+    X12 x = lattice_hinge(i % 2 == 0);
+    const int k = r.integer(-300, 300);
+    const double o = std::ldexp(static_cast<double>(r.integer(-64, 64)), k);
+    for (double& v : x) v = std::ldexp(v, k) + o;
+    add_if_valid(out, "folded", std::string(i % 2 == 0 ? "folded" : "flat") + "-2^" + std::to_string(k), x);
+  }
+  for (int i = 0; i < per_family; ++i) {  // offsets from 1 to 1e16 times the hinge's size
+    const int k = r.integer(0, 15);
+    const Local l = random_well_shaped(r);
+    const P3 d = random_point(r, 1);
+    const double o = power_of_ten(k) * r.uniform(1, 10);
+    add_if_valid(out, "offsets", "1e" + std::to_string(k),
+                 place(l.points(), {0.5, 0, 0}, random_rotation(r), 1, {o * d[0], o * d[1], o * d[2]}));
+  }
+  for (int i = 0; i < per_family; ++i) {  // scales 2^-500 to 2^500
+    const int k = r.integer(-500, 500);
+    X12 x = random_placement(r, random_well_shaped(r));
+    for (double& v : x) v = std::ldexp(v, k);
+    add_if_valid(out, "scales", "2^" + std::to_string(k), x);
+  }
+  for (int i = 0; i < per_family; ++i) {  // a needle, offset and scaled
+    std::string tag;
+    X12 x = random_needle(r, tag);
+    const double o = power_of_ten(r.integer(0, 8));
+    const P3 d = random_point(r, 1);
+    const int k = r.integer(-300, 300);
+    for (int v = 0; v < 4; ++v)
+      for (int c = 0; c < 3; ++c) x[3 * v + c] = std::ldexp(x[3 * v + c] + o * d[c], k);
+    add_if_valid(out, "combined", tag + "-offset-1e" + std::to_string(static_cast<int>(std::log10(o))) + "-2^" +
+                                      std::to_string(k), x);
+  }
+  return out;
+}
 
 const std::vector<std::string>& categories() {
   static const std::vector<std::string> names{"well-shaped", "rotations", "scales", "offsets", "near-flat",

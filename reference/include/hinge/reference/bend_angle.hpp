@@ -10,7 +10,10 @@
 // Sign: theta has the sign of (n x n~) . e0: lifting x0 along +n makes theta negative.
 #pragma once
 
+#include <limits>
+
 #include "hinge/reference/energy.hpp"  // BendAngle
+#include "hinge/reference/errors.hpp"
 #include "hinge/reference/stencil.hpp"
 
 namespace hinge::reference {
@@ -21,11 +24,25 @@ enum class ExactSign { negative = -1, zero = 0, positive = 1, computed = 2 };
 
 // atan2 form (docs/contract.md). On the branch cut (numerator exactly zero, denominator negative) the
 // result is +pi, never -pi: a zero numerator is taken as +0.
+// e0 is normalized before the product (the same number): |N||Nt| l0 would underflow in float on a hinge
+// edge below about 2^-37 of the others, where |N||Nt| does not. Where the exact sign says theta is
+// neither 0 nor pi but the computed numerator is 0 (rounding, on a nearly flat or folded hinge), the
+// numerator takes the smallest value of that sign: theta is then the value of this type nearest 0 or
+// +-pi, on the correct side, never a false branch cut. Both products 0 (|N||Nt| below the type's range)
+// is a DomainError.
 template <class Scalar>
 BendAngle<Scalar> bend_angle(const Stencil<Scalar>& s, ExactSign sign = ExactSign::computed) {
   const Vec3<Scalar>& e0 = s.upper.e[0];
-  Scalar y = s.N.cross(s.Nt).dot(e0) / s.upper.l[0];  // |N||Nt| sin(theta)
+  Scalar y = s.N.cross(s.Nt).dot(e0 / s.upper.l[0]);  // |N||Nt| sin(theta)
   Scalar x = s.N.dot(s.Nt);                           // |N||Nt| cos(theta)
+  if (y == 0 && (sign == ExactSign::negative || sign == ExactSign::positive)) {
+    if (x == 0)
+      throw DomainError("|N||Nt| underflows in this scalar type: the triangles' areas are too small relative to the "
+                        "longest edge squared for its exponent range");
+    using std::numeric_limits;
+    y = numeric_limits<Scalar>::denorm_min() > 0 ? Scalar(numeric_limits<Scalar>::denorm_min())
+                                                 : Scalar(numeric_limits<Scalar>::min());
+  }
   if (sign != ExactSign::computed) {
     // Rounding may give y the wrong sign, or make an exact zero nonzero: the exact sign decides.
     if (sign == ExactSign::zero) y = Scalar(0);

@@ -31,5 +31,8 @@ class EnvironmentError : public std::runtime_error {
 // DomainError "<what> is outside the range of double" (what: "theta", "the gradient", "the Hessian", "the
 // energy"): an exact result, or one computed in a wider type, that no finite double can hold.
 [[noreturn]] void throw_outside_double(const std::string& what);
+// DomainError "<what> overflowed in float (...)": a result computed in float that overflowed there
+// (`hinge eval --scalar float`): the value itself, or a step towards it, is outside float's range.
+[[noreturn]] void throw_outside_float(const std::string& what);
 
 }  // namespace hinge

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "hinge/reference/assemble.hpp"
@@ -17,9 +18,11 @@
 namespace hinge::reference {
 
 // `value` rounded to the nearest double; DomainError ("<what> is outside the range of double") when
-// that is not finite.
+// that is not finite, or "<what> overflowed in float (...)" when `value` is a float that overflowed.
 double rounded_to_double(const auto& value, const char* what) {
   const double d = to_double(value);
+  if constexpr (std::is_same_v<std::remove_cvref_t<decltype(value)>, float>)
+    if (!std::isfinite(d)) throw_outside_float(what);
   if (!std::isfinite(d)) throw_outside_double(what);
   return d;
 }
