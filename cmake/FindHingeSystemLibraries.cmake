@@ -6,21 +6,27 @@
 # (find_dependency). Sets HingeSystemLibraries_FOUND.
 include(FindPackageHandleStandardArgs)
 
-# hinge_system_library(TARGET HEADER LIBRARY [DEPENDS target...]): TARGET from HEADER and LIBRARY.
+# hinge_system_library(TARGET HEADER LIBRARY [DEPENDS target...] [HINTS dir...]): TARGET from HEADER and
+# LIBRARY; HEADER "" for a library whose header the compiler finds by itself.
 function(hinge_system_library target header library)
   cmake_parse_arguments(arg "" "" "DEPENDS;HINTS" ${ARGN})
   string(MAKE_C_IDENTIFIER "${target}" var)
-  find_path(${var}_INCLUDE_DIR ${header} HINTS ${arg_HINTS})
   find_library(${var}_LIBRARY ${library} HINTS ${arg_HINTS})
+  set(required ${var}_LIBRARY)
+  if(header)
+    find_path(${var}_INCLUDE_DIR ${header} HINTS ${arg_HINTS})
+    list(APPEND required ${var}_INCLUDE_DIR)
+  endif()
   mark_as_advanced(${var}_INCLUDE_DIR ${var}_LIBRARY)
-  if(${var}_INCLUDE_DIR AND ${var}_LIBRARY AND NOT TARGET ${target})
+  if(${var}_LIBRARY AND (NOT header OR ${var}_INCLUDE_DIR) AND NOT TARGET ${target})
     add_library(${target} UNKNOWN IMPORTED)
     set_target_properties(${target} PROPERTIES IMPORTED_LOCATION "${${var}_LIBRARY}"
-                          INTERFACE_INCLUDE_DIRECTORIES "${${var}_INCLUDE_DIR}"
                           INTERFACE_LINK_LIBRARIES "${arg_DEPENDS}")
+    if(header)
+      set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${${var}_INCLUDE_DIR}")
+    endif()
   endif()
-  set(HingeSystemLibraries_REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS} ${var}_INCLUDE_DIR ${var}_LIBRARY
-      PARENT_SCOPE)
+  set(HingeSystemLibraries_REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS} ${required} PARENT_SCOPE)
 endfunction()
 
 set(HingeSystemLibraries_REQUIRED_VARS)
@@ -29,8 +35,8 @@ hinge_system_library(GMP::gmpxx gmpxx.h gmpxx DEPENDS GMP::gmp)
 hinge_system_library(MPFR::mpfr mpfr.h mpfr DEPENDS GMP::gmp)
 hinge_system_library(MPFI::mpfi mpfi.h mpfi DEPENDS MPFR::mpfr)
 hinge_system_library(QD::qd qd/dd_real.h qd)
-# libquadmath lives in GCC's own directories, which the compiler searches implicitly.
-hinge_system_library(Quadmath::quadmath quadmath.h quadmath
-                     HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES} ${CMAKE_CXX_IMPLICIT_INCLUDE_DIRECTORIES})
+# libquadmath lives in GCC's own directories, searched for the library only: its header, which Boost's
+# float128 includes, is the compiler's business (GCC finds it in its own include directory).
+hinge_system_library(Quadmath::quadmath "" quadmath HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES})
 
 find_package_handle_standard_args(HingeSystemLibraries REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS})
