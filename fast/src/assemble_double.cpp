@@ -3,6 +3,7 @@
 // on eight faces at a time in double-double (face_pass_lanes.hpp); the assembly pass has no x86-64-v4
 // version, which measured slower than x86-64-v3 (docs/performance-log.md).
 #include "dispatch.hpp"
+#include "hinge/fast/isa.hpp"
 #include "face_pass_lanes.hpp"
 #include "passes.hpp"
 
@@ -36,7 +37,7 @@ void assembly_baseline(const Mesh& mesh, const Pattern& pattern, const std::arra
 template <>
 void Kernels<double>::faces(const Mesh& mesh, const Pattern& pattern, std::size_t begin, std::size_t end,
                             std::array<double, 4>* face, char* suspect) {
-  static const auto kernel = has_x86_64_v4() ? faces_v4 : has_x86_64_v3() ? faces_v3 : faces_baseline;
+  static const auto kernel = active_isa() == Isa::avx512 ? faces_v4 : active_isa() == Isa::avx2 ? faces_v3 : faces_baseline;
   kernel(mesh, pattern, begin, end, face, suspect);
 }
 
@@ -44,7 +45,7 @@ template <>
 void Kernels<double>::assembly(const Mesh& mesh, const Pattern& pattern, const std::array<double, 4>* face,
                                const double* psi1, const double* psi2, AssemblyRange r, AssemblyFlags flags,
                                double* values, double* gradient) {
-  static const auto kernel = has_x86_64_v3() ? assembly_v3 : assembly_baseline;
+  static const auto kernel = active_isa() == Isa::baseline ? assembly_baseline : assembly_v3;  // v4: v3's
   kernel(mesh, pattern, face, psi1, psi2, r, flags, values, gradient);
 }
 

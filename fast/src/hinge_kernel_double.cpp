@@ -6,9 +6,13 @@
 // outcome is completed here (exact decisions, atan2, errors), in code common to the three. Many hinges
 // in one call go two at a time where the processor has AVX-512 (pair_v4), each completed as if alone.
 #include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
 #include <limits>
 
 #include "dispatch.hpp"
+#include "hinge/fast/isa.hpp"
 #include "double_kernel.hpp"
 #include "hinge_kernel_lanes.hpp"
 
@@ -116,8 +120,10 @@ void evaluate_all(const Kernels& kernels, const std::array<double, 12>* x, std::
   for (; i < count; ++i) evaluate(kernels, x[i], want_hessian, out[i]);
 }
 
+const Kernels& kernels_for(Isa isa) { return isa == Isa::avx512 ? kAvx512 : isa == Isa::avx2 ? kAvx2 : kBaseline; }
+
 const Kernels& best_kernels() {
-  static const Kernels& kernels = has_x86_64_v4() ? kAvx512 : has_x86_64_v3() ? kAvx2 : kBaseline;
+  static const Kernels& kernels = kernels_for(active_isa());
   return kernels;
 }
 
@@ -153,10 +159,26 @@ bool isa_available(Isa isa) {
   return false;
 }
 
+Isa active_isa() {
+  static const Isa isa = [] {
+    const char* value = std::getenv("HINGE_ISA");
+    if (!value || !*value) return isa_available(Isa::avx512) ? Isa::avx512 : isa_available(Isa::avx2) ? Isa::avx2 : Isa::baseline;
+    const std::string name = value;
+    for (Isa candidate : {Isa::avx512, Isa::avx2, Isa::baseline})
+      if (name == isa_name(candidate)) {
+        if (!isa_available(candidate))
+          throw std::invalid_argument("HINGE_ISA=" + name + ": this processor lacks " + name +
+                                      " (x86-64-v4: AVX-512; x86-64-v3: AVX2, FMA, BMI2)");
+        return candidate;
+      }
+    throw std::invalid_argument("HINGE_ISA=" + name + ": expected avx512, avx2 or baseline");
+  }();
+  return isa;
+}
+
 bool hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
   if (!isa_available(isa)) return false;
-  detail::evaluate(isa == Isa::avx512 ? detail::kAvx512 : isa == Isa::avx2 ? detail::kAvx2 : detail::kBaseline, x,
-                   want_hessian, out);
+  detail::evaluate(detail::kernels_for(isa), x, want_hessian, out);
   return true;
 }
 

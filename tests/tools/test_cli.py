@@ -83,6 +83,34 @@ def test_cond_gives_the_tolerance_policy_condition_numbers():
     assert code == 0 and "kappa" not in lines(out)[0] and "error" in lines(out)[0]
 
 
+def run_with_isa(isa, args, stdin=""):
+    env = dict(os.environ, HINGE_ISA=isa)
+    p = subprocess.run([HINGE] + args, input=stdin, capture_output=True, text=True, timeout=300, env=env)
+    return p.returncode, p.stdout, p.stderr
+
+
+def test_hinge_isa_selects_the_double_kernels_with_the_same_bits_and_rejects_unknown_values():
+    text = open(os.path.join(EXAMPLES, "eval-input.jsonl")).read()
+    mesh = os.path.join(os.path.dirname(EXAMPLES), "..", "conformance", "meshes", "hex.obj")
+    rest = os.path.join(os.path.dirname(EXAMPLES), "..", "conformance", "meshes", "hex-rest.obj")
+    outputs = {}
+    with tempfile.TemporaryDirectory() as d:
+        for isa in ("avx512", "avx2", "baseline", ""):  # "" is unset: the best the processor has
+            code, out, err = run_with_isa(isa, ["eval", "--method", "fast"], text)
+            if code == 2 and "lacks" in err:  # a processor without it: the error names HINGE_ISA and the set
+                assert isa in ("avx512", "avx2") and "HINGE_ISA=" + isa in err, err
+                continue
+            hessian = os.path.join(d, isa + "H.mtx")
+            code2, energy, _ = run_with_isa(isa, ["hessian", "--mesh", mesh, "--rest", rest, "--energy", "tan", "--k", "1",
+                                                  "--method", "fast", "--out", hessian])
+            assert code == 0 and code2 == 0, (isa, err)
+            outputs[isa] = (out, energy, open(hessian).read())
+    assert "baseline" in outputs and len(set(outputs.values())) == 1, list(outputs)
+    code, _, err = run_with_isa("sse9", ["eval", "--method", "fast"], text)
+    assert code == 2 and "HINGE_ISA=sse9" in err, (code, err)
+    assert run_with_isa("sse9", ["eval", "--method", "reference"], text)[0] == 0  # only the double kernels read it
+
+
 def test_numbers_read_back_exactly_and_look_like_doubles():
     code, out, _ = run(["eval", "--scalar", "float128"], open(os.path.join(EXAMPLES, "eval-input.jsonl")).read())
     assert code == 0
