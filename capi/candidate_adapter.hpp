@@ -1,10 +1,14 @@
 // The part every one of the project's conformance plugins shares (hinge/candidate.h): copy the 12
 // coordinates in, the results out, and turn an exception (a degenerate or non-finite hinge) into the
-// "cannot evaluate" return value.
+// "cannot evaluate" return value. A std::invalid_argument (HINGE_ISA naming an unknown or unavailable
+// instruction set) is a setting of the host, not of the hinge: it is also printed on standard error, once.
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <cstdio>
 #include <exception>
+#include <stdexcept>
 
 #include "hinge/candidate.h"
 
@@ -24,6 +28,10 @@ int call_candidate(const double x[12], double* theta, double grad[12], double he
     for (int i = 0; i < 12; ++i)
       for (int j = 0; j < 12; ++j) hess[12 * i + j] = d.hess(i, j);  // row-major
     return 0;
+  } catch (const std::invalid_argument& e) {
+    static std::atomic<bool> said{false};  // once per process, not once per hinge
+    if (!said.exchange(true)) std::fprintf(stderr, "hinge candidate plugin: %s\n", e.what());
+    return 1;
   } catch (const std::exception&) {
     return 1;
   }

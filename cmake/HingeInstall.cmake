@@ -19,7 +19,7 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/hingeConfig.cmake ${CMAKE_CURRENT_BINA
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hinge)
 
 # pkg-config: one package, hinge, with every library (static: the linker keeps what is used). MPFI and
-# libquadmath ship no .pc file, so they are named by -l; the others are Requires.private of their own.
+# libquadmath ship no .pc file, so they are named by -l; the others are in Requires.
 # The prefix is found relative to the .pc file, so the installed tree can move.
 file(RELATIVE_PATH HINGE_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
 configure_file(cmake/hinge.pc.in ${CMAKE_CURRENT_BINARY_DIR}/hinge.pc @ONLY)

@@ -18,6 +18,8 @@
 //
 #pragma once
 
+#include "hinge/fast/isa.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -204,10 +206,18 @@ void Workspace<Scalar>::report(const Mesh& mesh, Purpose purpose) {
   }
 }
 
+// HINGE_ISA is read (and a bad value thrown as std::invalid_argument) here, on the caller's thread: the
+// double passes that read it first run on the team's threads, which must not throw.
+template <class Scalar>
+void check_isa() {
+  if constexpr (std::is_same_v<Scalar, double>) (void)active_isa();
+}
+
 template <class Scalar>
 std::vector<HingeCoefficients<Scalar>> Workspace<Scalar>::rest_state(const Mesh& rest_given,
                                                                      const EnergyParameters& parameters, int threads) {
   check_fp_environment();
+  check_isa<Scalar>();
   check_mesh_size(rest_given, "rest");
   threads = std::max(threads, 1);
   int p = 0;  // the coefficients are scale-invariant: nothing to scale back
@@ -237,6 +247,7 @@ template <class Scalar>
 void Workspace<Scalar>::set_previous_state(std::vector<HingeCoefficients<Scalar>>& coefficients,
                                            const Mesh& previous_given, int threads) {
   check_fp_environment();
+  check_isa<Scalar>();
   check_mesh_size(previous_given, "previous");
   threads = std::max(threads, 1);
   int p = 0;  // phi_hat is scale-invariant
@@ -255,6 +266,7 @@ void Workspace<Scalar>::evaluate(const Mesh& deformed_given, const std::vector<H
                                   Model model, unsigned request, int threads, MeshDerivatives<Scalar>& out,
                                   std::vector<HingeCoefficients<Scalar>>* release) {
   check_fp_environment();  // the exact steps need rounding to nearest and subnormals
+  check_isa<Scalar>();
   check_mesh_size(deformed_given, "deformed");
   threads = std::max(threads, 1);
   int scale = 0;  // deformed_given = 2^scale deformed: gradient 2^-scale, Hessian 2^-2 scale, energy unchanged

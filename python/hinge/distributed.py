@@ -58,11 +58,15 @@ def options_of(args):
     return {"report_precision": args.report_precision, "start_bits": args.start_bits, "max_bits": args.max_bits}
 
 
+# One valid hinge: evaluated once on the driver, so that an unknown method or scalar, or a HINGE_ISA the
+# processor lacks, is a usage error (exit 2) before any cluster starts.
+PROBE = b'{"id": "probe", "x": [0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -1, 0.5]}\n'
+
+
 def check_options(parser, args):
-    """Unknown method or scalar names are usage errors, found before any cluster starts."""
     from . import _hinge
     try:
-        _hinge.stream(args.command, b"", 1, **options_of(args))
+        _hinge.stream(args.command, PROBE, 1, **options_of(args))
     except ValueError as e:
         parser.error(str(e))
 
@@ -121,17 +125,19 @@ def main(argv=None):
     except OSError as e:
         print("%s: cannot write %s: %s" % (PROGRAM, args.output, e.strerror), file=sys.stderr)
         return 1
+    output = os.fdopen(handle, "wb")
     umask = os.umask(0)
     os.umask(umask)
     os.chmod(temporary, 0o666 & ~umask)  # as any file the command writes, not mkstemp's 0600
     cluster = client = None
     try:
         client, cluster = connect(args)
-        with os.fdopen(handle, "wb") as output:
+        with output:
             flagged_outputs, flagged_hinges = run(args, client, output)
         os.replace(temporary, args.output)
-    except (OSError, TimeoutError) as e:
-        print("%s: %s" % (PROGRAM, e), file=sys.stderr)
+    except Exception as e:  # noqa: BLE001: the cluster, a worker or a file failed: exit 1 with its message
+        output.close()
+        print("%s: %s: %s" % (PROGRAM, type(e).__name__, e), file=sys.stderr)
         return 1
     finally:
         if os.path.exists(temporary):

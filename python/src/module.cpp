@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -104,10 +105,53 @@ auto parsed(F&& f) {
   }
 }
 
-Result eval(const py::object& x, const std::string& method_name, const std::string& scalar_name) {
-  const auto method = parsed([&] { return hinge::methods::parse_method(method_name); });
-  const auto scalar = parsed([&] { return hinge::parse_scalar_type(scalar_name); });
-  return run_hinges(x, [&](std::size_t, const std::array<double, 12>& xi, double* t, double* g, double* h) {
+// Arguments of the wrong Python type are ValueErrors naming the argument (contract, "Python"), not
+// pybind11's TypeError.
+std::string as_name(const py::object& o, const char* what) {
+  if (!py::isinstance<py::str>(o))
+    throw py::value_error(std::string(what) + " must be a string; got " + std::string(py::str(py::type::of(o).attr("__name__"))));
+  return o.cast<std::string>();
+}
+double as_number(const py::object& o, const char* what) {
+  if (py::isinstance<py::bool_>(o) || !(py::isinstance<py::float_>(o) || py::isinstance<py::int_>(o) ||
+                                        py::hasattr(o, "__float__")))
+    throw py::value_error(std::string(what) + " must be a number; got " + std::string(py::str(py::type::of(o).attr("__name__"))));
+  try {
+    return py::float_(o).cast<double>();
+  } catch (py::error_already_set& e) {
+    throw py::value_error(std::string(what) + " must be a number: " + e.what());
+  }
+}
+int as_count(const py::object& o, const char* what, int largest) {
+  if (py::isinstance<py::bool_>(o) || !py::hasattr(o, "__index__"))
+    throw py::value_error(std::string(what) + " must be an integer; got " + std::string(py::str(py::type::of(o).attr("__name__"))));
+  const py::int_ value(o);
+  if (value < py::int_(0) || value > py::int_(largest))
+    throw py::value_error(std::string(what) + " must be in [0, " + std::to_string(largest) + "]");
+  return value.cast<int>();
+}
+hinge::methods::Method as_method(const py::object& o) {
+  return parsed([&] { return hinge::methods::parse_method(as_name(o, "method")); });
+}
+hinge::ScalarType as_scalar(const py::object& o) {
+  return parsed([&] { return hinge::parse_scalar_type(as_name(o, "scalar")); });
+}
+
+// Boost's MPFR types (1.74) keep their default precision for the whole process, and the mpfr:BITS scalar
+// types set it before each evaluation: with the GIL released, two Python threads using two precisions
+// would change each other's. Evaluations in an mpfr type hold this lock (the others run concurrently).
+std::mutex mpfr_precision;
+std::unique_lock<std::mutex> lock_if_mpfr(const hinge::ScalarType& scalar) {
+  if (scalar.kind == hinge::ScalarType::Kind::kind_mpfr) return std::unique_lock<std::mutex>(mpfr_precision);
+  return {};
+}
+
+Result eval(const py::object& x, const py::object& method_name, const py::object& scalar_name) {
+  const auto method = as_method(method_name);
+  const auto scalar = as_scalar(scalar_name);
+  std::unique_lock<std::mutex> lock;
+  return run_hinges(x, [&](std::size_t i, const std::array<double, 12>& xi, double* t, double* g, double* h) {
+    if (i == 0) lock = lock_if_mpfr(scalar);  // without the GIL (run_hinges released it)
     store(hinge::methods::evaluate_hinge(method, scalar, xi), t, g, h);
   });
 }
@@ -125,8 +169,49 @@ Result oracle(const py::object& x) {
   return r;
 }
 
-// The (n, 3) vertices of a mesh; ValueError naming the argument.
-hinge::Mesh as_mesh(const py::object& vertices, const py::array& faces, const char* name) {
+// The (m, 3) faces, 0-based indices into `vertex_count` vertices, checked before any conversion (an
+// unsigned index above 2^63 is named as given); ValueError naming the argument.
+std::vector<std::array<hinge::Index, 3>> as_faces(const py::object& faces, std::size_t vertex_count) {
+  py::array f;
+  try {
+    f = py::module_::import("numpy").attr("asarray")(faces);
+  } catch (py::error_already_set& e) {
+    throw py::value_error(std::string("faces must be an (m, 3) array of integers: ") + e.what());
+  }
+  if (f.ndim() != 2 || f.shape(1) != 3)
+    throw py::value_error("faces must have shape (m, 3); got " + std::string(py::str(f.attr("shape"))));
+  if (f.shape(0) == 0) throw py::value_error("faces is empty: a mesh needs at least one face");
+  const std::string kind = py::str(f.dtype().attr("kind"));
+  if (kind != "i" && kind != "u")
+    throw py::value_error("faces must hold integers (0-based vertex indices); got dtype " + std::string(py::str(f.dtype())));
+  const std::string type = kind == "u" ? "uint64" : "int64";
+  const py::array wide = py::module_::import("numpy").attr("ascontiguousarray")(f, "dtype"_a = type);
+  std::vector<std::array<hinge::Index, 3>> out(static_cast<std::size_t>(f.shape(0)));
+  for (std::size_t face = 0; face < out.size(); ++face)
+    for (std::size_t c = 0; c < 3; ++c) {
+      std::string shown;
+      bool inside;
+      std::uint64_t index;
+      if (kind == "u") {
+        index = static_cast<const std::uint64_t*>(wide.data())[3 * face + c];
+        inside = index < vertex_count;
+        shown = std::to_string(index);
+      } else {
+        const std::int64_t signed_index = static_cast<const std::int64_t*>(wide.data())[3 * face + c];
+        inside = signed_index >= 0 && static_cast<std::uint64_t>(signed_index) < vertex_count;
+        index = static_cast<std::uint64_t>(signed_index);
+        shown = std::to_string(signed_index);
+      }
+      if (!inside)
+        throw py::value_error("faces[" + std::to_string(face) + "] refers to vertex " + shown + ", but there are " +
+                              std::to_string(vertex_count) + " vertices (0-based)");
+      out[face][c] = static_cast<hinge::Index>(index);
+    }
+  return out;
+}
+
+// The (n, 3) vertices of a mesh (`name`: "vertices" or "rest"); ValueError naming the argument.
+std::vector<std::array<double, 3>> as_vertices(const py::object& vertices, const char* name) {
   py::array v;
   try {
     v = py::module_::import("numpy").attr("ascontiguousarray")(vertices, "dtype"_a = "float64");
@@ -136,63 +221,45 @@ hinge::Mesh as_mesh(const py::object& vertices, const py::array& faces, const ch
   if (v.ndim() != 2 || v.shape(1) != 3)
     throw py::value_error(std::string(name) + " must have shape (n, 3); got " + std::string(py::str(v.attr("shape"))));
   const auto pv = v.cast<py::array_t<double, py::array::c_style>>();
-  hinge::Mesh mesh;
-  mesh.vertices.resize(static_cast<std::size_t>(pv.shape(0)));
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+  std::vector<std::array<double, 3>> out(static_cast<std::size_t>(pv.shape(0)));
+  for (std::size_t i = 0; i < out.size(); ++i)
     for (std::size_t c = 0; c < 3; ++c) {
       const double value = pv.data()[3 * i + c];
-      if (!std::isfinite(value))
-        throw py::value_error(std::string(name) + "[" + std::to_string(i) + "] is not finite");
-      mesh.vertices[i][c] = value;
+      if (!std::isfinite(value)) throw py::value_error(std::string(name) + "[" + std::to_string(i) + "] is not finite");
+      out[i][c] = value;
     }
-  const auto pf = faces.cast<py::array_t<std::int64_t, py::array::c_style>>();
-  mesh.faces.resize(static_cast<std::size_t>(pf.shape(0)));
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    for (std::size_t c = 0; c < 3; ++c) {
-      const std::int64_t index = pf.data()[3 * f + c];
-      if (index < 0 || index >= static_cast<std::int64_t>(mesh.vertices.size()))
-        throw py::value_error("faces[" + std::to_string(f) + "] refers to vertex " + std::to_string(index) + ", but " +
-                              name + " has " + std::to_string(mesh.vertices.size()) + " (0-based)");
-      mesh.faces[f][c] = static_cast<hinge::Index>(index);
-    }
-  return mesh;
-}
-
-py::array as_faces(const py::object& faces) {
-  py::array f = py::module_::import("numpy").attr("asarray")(faces);
-  if (f.ndim() != 2 || f.shape(1) != 3)
-    throw py::value_error("faces must have shape (m, 3); got " + std::string(py::str(f.attr("shape"))));
-  const std::string kind = py::str(f.dtype().attr("kind"));
-  if (kind != "i" && kind != "u" && f.shape(0) > 0)
-    throw py::value_error("faces must hold integers (0-based vertex indices); got dtype " + std::string(py::str(f.dtype())));
-  if (f.shape(0) == 0) throw py::value_error("faces is empty: a mesh needs at least one face");
-  return py::module_::import("numpy").attr("ascontiguousarray")(f, "dtype"_a = "int64");
+  return out;
 }
 
 py::tuple hessian(const py::object& vertices, const py::object& faces_object, const py::object& rest_object,
-                  const std::string& energy, double k, const std::string& method_name, int threads,
-                  const std::string& scalar_name, bool allow_no_hinges) {
-  const auto method = parsed([&] { return hinge::methods::parse_method(method_name); });
-  const auto scalar = parsed([&] { return hinge::parse_scalar_type(scalar_name); });
+                  const py::object& energy, const py::object& k_object, const py::object& method_name,
+                  const py::object& threads_object, const py::object& scalar_name, bool allow_no_hinges) {
+  const auto method = as_method(method_name);
+  const auto scalar = as_scalar(scalar_name);
   hinge::reference::EnergyParameters parameters;
-  parameters.model = parsed([&] { return hinge::reference::parse_model(energy); });
+  parameters.model = parsed([&] { return hinge::reference::parse_model(as_name(energy, "energy")); });
   if (parameters.model == hinge::reference::Model::viscoelastic)
     throw py::value_error("energy 'viscoelastic' is available from the C++ library, not from this function");
+  const double k = as_number(k_object, "k");
   if (!std::isfinite(k) || k < 0) throw py::value_error("k must be finite and >= 0");
   parameters.k = k;
-  if (threads < 0) throw py::value_error("threads must be >= 0 (0: all cores)");
-  const py::array faces = as_faces(faces_object);
-  const hinge::Mesh deformed = as_mesh(vertices, faces, "vertices");
+  const int threads = as_count(threads_object, "threads", 4096);  // 0: all cores
+  hinge::Mesh deformed;
+  deformed.vertices = as_vertices(vertices, "vertices");
+  deformed.faces = as_faces(faces_object, deformed.vertices.size());
   std::optional<hinge::Mesh> rest;
   if (!rest_object.is_none()) {
-    rest = as_mesh(rest_object, faces, "rest");
+    rest.emplace();
+    rest->vertices = as_vertices(rest_object, "rest");
     if (rest->vertices.size() != deformed.vertices.size())
       throw py::value_error("rest has " + std::to_string(rest->vertices.size()) + " vertices, vertices has " +
                             std::to_string(deformed.vertices.size()));
+    rest->faces = deformed.faces;
   }
   hinge::reference::RoundedMesh result;
   try {
     py::gil_scoped_release release;
+    const auto lock = lock_if_mpfr(scalar);
     const hinge::Topology topology = hinge::build_topology(deformed);
     if (topology.hinges.empty() && !allow_no_hinges)
       throw hinge::InputError("the mesh has no interior edge, so its bending energy is 0 whatever its shape"
@@ -229,16 +296,17 @@ py::tuple hessian(const py::object& vertices, const py::object& faces_object, co
 // The shard of a JSON Lines file that hinge.distributed gives a worker: the output bytes of `hinge eval`
 // or `hinge oracle` for it (io::transform_hinge_lines, lines numbered from first_line), and the number of
 // outputs and hinges the oracle could not certify.
-py::tuple stream(const std::string& command, const py::bytes& input, long first_line, const std::string& method_name,
-                 const std::string& scalar_name, bool report_precision, unsigned start_bits, unsigned max_bits) {
+py::tuple stream(const std::string& command, const py::bytes& input, long first_line, const py::object& method_name,
+                 const py::object& scalar_name, bool report_precision, unsigned start_bits, unsigned max_bits) {
   if (command != "eval" && command != "oracle") throw py::value_error("command must be 'eval' or 'oracle'");
-  const auto method = parsed([&] { return hinge::methods::parse_method(method_name); });
-  const auto scalar = parsed([&] { return hinge::parse_scalar_type(scalar_name); });
+  const auto method = as_method(method_name);
+  const auto scalar = as_scalar(scalar_name);
   std::istringstream in(static_cast<std::string>(input));
   std::ostringstream out;
   std::size_t flagged_outputs = 0, flagged_hinges = 0;
   {
     py::gil_scoped_release release;
+    const auto lock = lock_if_mpfr(scalar);
     hinge::oracle::Options options;
     options.start_bits = start_bits;
     options.max_bits = max_bits;

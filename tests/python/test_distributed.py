@@ -41,6 +41,13 @@ def test_distributed_output_is_byte_for_byte_the_command(command, awkward_file, 
     assert b'"line": ' in expected  # the invalid lines' numbers are in the comparison
 
 
+def test_a_bad_hinge_isa_is_a_usage_error_found_on_the_driver(awkward_file, tmp_path):
+    run = subprocess.run([sys.executable, "-m", "hinge.distributed", "eval", "--method", "fast", "--input", awkward_file,
+                          "--output", str(tmp_path / "o"), "--local", "1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         env=dict(os.environ, HINGE_ISA="sse9"))
+    assert run.returncode == 2 and b"HINGE_ISA=sse9" in run.stderr
+
+
 def test_usage_errors_exit_2_and_unreadable_input_exits_1(tmp_path):
     assert distributed("oracle", "--input", "x", "--output", "y").returncode == 2  # neither --local nor --scheduler
     assert distributed("eval", "--method", "newton", "--input", "x", "--output", "y", "--local", "1").returncode == 2

@@ -76,3 +76,23 @@ def test_unknown_methods_and_scalars_raise_value_error(kwargs, message):
 def test_an_empty_array_gives_empty_results():
     r = hinge.eval(np.zeros((0, 12)))
     assert r.theta.shape == (0,) and r.grad.shape == (0, 12) and r.hess.shape == (0, 12, 12) and r.error == []
+
+
+def test_threads_with_different_mpfr_precisions_do_not_disturb_each_other(conformance_file):
+    # Boost's MPFR default precision is one for the whole process: the module serializes mpfr evaluations.
+    import threading
+    x = read_x(conformance_file)[:60]
+    alone = {s: hinge.eval(x, method="reference", scalar=s).hess for s in ("mpfr:24", "mpfr:2000")}
+    differ = []
+
+    def work(scalar):
+        for _ in range(3):
+            if not np.array_equal(hinge.eval(x, method="reference", scalar=scalar).hess, alone[scalar], equal_nan=True):
+                differ.append(scalar)
+
+    threads = [threading.Thread(target=work, args=(s,)) for s in ("mpfr:24", "mpfr:2000") * 2]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert differ == []

@@ -97,6 +97,8 @@ def test_hessian_is_the_command_matrix_on_a_grid_with_threads(command, tmp_path)
     (lambda v, f: (v, f[:0]), "empty"),
     (lambda v, f: (v, np.vstack([f, f[:1]])), "edge"),
     (lambda v, f: (v, f[:1]), "no interior edge"),
+    (lambda v, f: (v, [[0, 1, 2], [1, 3]]), "faces must be"),  # ragged
+    (lambda v, f: (v, np.array([[0, 1, 2], [1, 3, 2**64 - 1]], dtype=np.uint64)), "vertex 18446744073709551615"),
 ])
 def test_bad_meshes_raise_value_error_naming_the_problem(change, message):
     vertices, faces = bent_grid(4)
@@ -107,7 +109,9 @@ def test_bad_meshes_raise_value_error_naming_the_problem(change, message):
 
 @pytest.mark.parametrize("kwargs,message", [({"energy": "bent"}, "bent"), ({"k": -1.0}, "k must"),
                                             ({"k": float("nan")}, "k must"), ({"method": "x"}, "method"),
-                                            ({"threads": -2}, "threads")])
+                                            ({"threads": -2}, "threads"), ({"method": 3}, "method must be a string"),
+                                            ({"threads": 2**40}, "threads must be in"), ({"k": "a"}, "k must be a number"),
+                                            ({"energy": None}, "energy must be a string"), ({"threads": True}, "threads")])
 def test_bad_parameters_raise_value_error(kwargs, message):
     vertices, faces = bent_grid(4)
     with pytest.raises(ValueError, match=message):

@@ -108,6 +108,21 @@ def test_hinge_isa_selects_the_double_kernels_with_the_same_bits_and_rejects_unk
     assert "baseline" in outputs and len(set(outputs.values())) == 1, list(outputs)
     code, _, err = run_with_isa("sse9", ["eval", "--method", "fast"], text)
     assert code == 2 and "HINGE_ISA=sse9" in err, (code, err)
+    # A mesh large enough for the face pass to run on two threads: the variable is read on the caller's.
+    with tempfile.TemporaryDirectory() as d:
+        grid = os.path.join(d, "grid.obj")
+        n = 50
+        with open(grid, "w") as f:
+            for j in range(n):
+                for i in range(n):
+                    f.write("v %r %r %r\n" % (i / n, j / n, 0.002 * ((7 * i + 3 * j) % 5)))
+            for j in range(n - 1):
+                for i in range(n - 1):
+                    a = j * n + i + 1
+                    f.write("f %d %d %d\nf %d %d %d\n" % (a, a + 1, a + n + 1, a, a + n + 1, a + n))
+        code, _, err = run_with_isa("sse9", ["hessian", "--mesh", grid, "--energy", "tan", "--k", "1", "--method", "fast",
+                                             "--threads", "2", "--out", os.path.join(d, "H.mtx")])
+        assert code == 2 and "HINGE_ISA=sse9" in err, (code, err)
     assert run_with_isa("sse9", ["eval", "--method", "reference"], text)[0] == 0  # only the double kernels read it
 
 
