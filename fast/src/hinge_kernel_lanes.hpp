@@ -262,7 +262,7 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   const W estimates = blend<0, 1, 1, 1>(sum_of_three(Cv.hi * Cv.hi), blend<0, 0, 1, 1>(spread<0>(edge_squares), one));
   // A hinge edge below 1/8 of the longest edge: eq. (6)'s central blocks (H11, H12, H22) then sum terms
   // several times their result, and the rounding of the per-triangle quantities to double shows (up to 9
-  // units of 2^-53 measured, against 3.5 above 1/8): such a hinge is evaluated again by the long double
+  // units of 2^-53 measured, against 3.0 above 1/8): such a hinge is evaluated again by the long double
   // kernel (double-double stencil, generic_kernel.hpp) and rounded to double (docs/numerics.md).
   each([&](auto h) { o[h].short_hinge_edge = 64 * part<h>(edge_squares).lane(0) < largest_lane(part<h>(edge_squares)); });
   const W y = one / root(estimates);  // lanes 0, 1: y_S, y_L (2, 3: 1)
