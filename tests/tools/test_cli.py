@@ -16,8 +16,8 @@ from script_tests import run_all
 HINGE, EXAMPLES = sys.argv[1], sys.argv[2]
 
 
-def run(args, stdin=""):
-    p = subprocess.run([HINGE] + args, input=stdin, capture_output=True, text=True, timeout=120)
+def run(args, stdin="", env=None, timeout=120):
+    p = subprocess.run([HINGE] + args, input=stdin, capture_output=True, text=True, timeout=timeout, env=env)
     return p.returncode, p.stdout, p.stderr
 
 
@@ -84,9 +84,7 @@ def test_cond_gives_the_tolerance_policy_condition_numbers():
 
 
 def run_with_isa(isa, args, stdin=""):
-    env = dict(os.environ, HINGE_ISA=isa)
-    p = subprocess.run([HINGE] + args, input=stdin, capture_output=True, text=True, timeout=300, env=env)
-    return p.returncode, p.stdout, p.stderr
+    return run(args, stdin, env=dict(os.environ, HINGE_ISA=isa), timeout=300)
 
 
 def test_hinge_isa_selects_the_double_kernels_with_the_same_bits_and_rejects_unknown_values():
