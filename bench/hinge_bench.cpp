@@ -1,6 +1,9 @@
 // Google Benchmark programs for hinge::fast against hinge::reference (bench/README.md):
 //   hinge/{fast,reference}                 one hinge: theta, grad theta, Hess theta (double)
 //   hinge/fast_many                        the same 1024 hinges in one call (a span)
+//   hinge/faithful                         one hinge in the faithful mode (hinge/fast/faithful.hpp)
+//   hinge/isa:I                            one hinge, the kernel compiled for I = avx512, avx2, baseline
+//                                          (those the processor has; HINGE_ISA, fast/isa.hpp)
 //   mesh/{fast,reference}/n:N/threads:T    a whole n x n cloth: energy, gradient and Hessian (tan energy),
 //                                          rest state precomputed, the pattern built once (fast)
 //   pattern/n:N                            building the fast pattern (once per topology)
@@ -26,6 +29,7 @@
 #include <vector>
 
 #include "hinge/fast/assemble.hpp"
+#include "hinge/fast/faithful.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
@@ -52,6 +56,28 @@ void hinge_fast(benchmark::State& state) {
   for (auto _ : state)
     for (const auto& x : hs) {
       auto d = fast::hinge_derivatives<double>(x);
+      benchmark::DoNotOptimize(d);
+    }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+}
+
+void hinge_faithful(benchmark::State& state) {
+  const auto& hs = bench_hinges();
+  for (auto _ : state)
+    for (const auto& x : hs) {
+      auto d = fast::faithful_hinge_derivatives(x);
+      benchmark::DoNotOptimize(d);
+    }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+}
+
+// One hinge a call, the kernel compiled for `isa`.
+void hinge_isa(benchmark::State& state, fast::Isa isa) {
+  const auto& hs = bench_hinges();
+  fast::HingeDerivatives<double> d;
+  for (auto _ : state)
+    for (const auto& x : hs) {
+      fast::hinge_derivatives(isa, x, true, d);
       benchmark::DoNotOptimize(d);
     }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
@@ -194,6 +220,18 @@ void summary(const Capture& c, const std::vector<int>& sides, double ghz_before,
     if (ghz > 0) std::printf(" (%.0f cycles)", ghz * 1e9 * hm->seconds / 1024);
     std::printf("\n");
   }
+  if (const auto hq = c.get("hinge/faithful"); hq && hf) {
+    std::printf("per hinge, faithful mode: %.1f ns, faithful/fast %.2f", 1e9 * hq->seconds / 1024, hq->seconds / hf->seconds);
+    if (ghz > 0) std::printf(" (%.0f cycles)", ghz * 1e9 * hq->seconds / 1024);
+    std::printf("\n");
+  }
+  if (const auto best = c.get("hinge/isa:avx512")) {
+    std::printf("per hinge by instruction set (one call per hinge): avx512 %.1f ns", 1e9 * best->seconds / 1024);
+    for (const char* isa : {"avx2", "baseline"})
+      if (const auto r = c.get(std::string("hinge/isa:") + isa))
+        std::printf(", %s %.1f ns (%.2f x avx512)", isa, 1e9 * r->seconds / 1024, r->seconds / best->seconds);
+    std::printf("\n");
+  }
   std::printf("%7s %10s %10s %14s %10s %8s %14s %9s %14s %14s\n", "side", "vertices", "edges", "fast 1T ns/e",
               "cycles/e", "spread", "fast 2T ns/e", "speedup", "ref ns/edge", "fast/ref");
   std::vector<std::pair<double, double>> fit_all, fit_large, fit_paper, fit_ref;
@@ -238,6 +276,10 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("hinge/fast", hinge_fast);
   benchmark::RegisterBenchmark("hinge/fast_many", hinge_fast_many);
   benchmark::RegisterBenchmark("hinge/reference", hinge_reference);
+  benchmark::RegisterBenchmark("hinge/faithful", hinge_faithful);
+  for (hinge::fast::Isa isa : {hinge::fast::Isa::avx512, hinge::fast::Isa::avx2, hinge::fast::Isa::baseline})
+    if (hinge::fast::isa_available(isa))
+      benchmark::RegisterBenchmark(("hinge/isa:" + std::string(hinge::fast::isa_name(isa))).c_str(), hinge_isa, isa);
   for (int n : sides) {
     benchmark::RegisterBenchmark("pattern", pattern_build)->ArgNames({"n"})->Args({n})->Unit(benchmark::kMillisecond);
     for (int threads : {1, 2})

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Error against condition number on the hard families (docs/hard-cases.md): one panel per method, one
-series per scalar type, each point one output group of one hinge (normwise error in units of 2^-53,
+series per scalar type (and the faithful mode, "double-faithful"), each point one output group of one hinge (normwise error in units of 2^-53,
 rounded to double, against the certified oracle), with the bounds the tests hold each to.
 
 Input: the JSON Lines that `HINGE_HARD_REPORT=FILE build/release/tests/methods/methods_hard` appends
@@ -17,7 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 METHODS = ["fast", "reference", "autodiff", "symbolic"]
-SCALARS = ["float", "double", "long-double", "dd", "qd", "float128", "bin128", "mpfr:128"]
+SCALARS = ["float", "double", "long-double", "dd", "qd", "float128", "bin128", "mpfr:128", "double-faithful"]
 FLOOR = 1e-3  # errors of exactly 0 are drawn here
 
 
@@ -41,6 +41,7 @@ def main(report, prefix):
         if method == "fast":
             ax.axhline(4, color="k", lw=1, label="4 units (fast, double)")
             ax.axhline(2, color="grey", lw=1, label="2 units (fast, wider types)")
+            ax.axhline(1, color="grey", lw=1, ls=":", label="1 unit (fast, double, the faithful mode)")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_title(method)

@@ -1,5 +1,6 @@
-// hinge eval [--method M] [--scalar S] [--cond] [--input FILE] [--output FILE] (docs/contract.md).
+// hinge eval [--method M] [--scalar S] [--cond] [--faithful] [--input FILE] [--output FILE] (docs/contract.md).
 #include "commands.hpp"
+#include "hinge/fast/faithful.hpp"
 #include "hinge/io/jsonl.hpp"
 #include "hinge/io/number.hpp"
 #include "hinge/methods/methods.hpp"
@@ -12,7 +13,7 @@ Action add_eval(CLI::App& app) {
   auto* cmd = app.add_subcommand("eval", "Evaluate theta, its gradient and Hessian for hinges given as JSON Lines");
   struct Options {
     std::string method = "reference", scalar = "double", input, output;
-    bool cond = false;
+    bool cond = false, faithful = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--method", o->method, "Evaluation method: reference, fast, autodiff, symbolic")->capture_default_str();
@@ -21,6 +22,9 @@ Action add_eval(CLI::App& app) {
   cmd->add_flag("--cond", o->cond,
                 "Add to each result \"kappa\": {\"theta\", \"grad\", \"hess\"}, the condition numbers of the tolerance "
                 "policy, L ||J_f||_F / ||f||_2 (docs/conformance.md), from the certified values");
+  cmd->add_flag("--faithful", o->faithful,
+                "With --method fast (double): each output group within 1 unit of 2^-53 of the exact values, normwise "
+                "(hinge/fast/faithful.hpp; about twice the plain kernel's time)");
   cmd->add_option("--input", o->input, "Input JSON Lines file (default: standard input)");
   cmd->add_option("--output", o->output, "Output JSON Lines file (default: standard output)");
   cmd->footer(
@@ -30,8 +34,11 @@ Action add_eval(CLI::App& app) {
   return [o]() -> int {
     const ScalarType scalar = parse_scalar_type(o->scalar);  // std::invalid_argument: usage error
     const methods::Method method = methods::parse_method(o->method);
+    if (o->faithful && (method != methods::Method::fast || scalar.kind != ScalarType::Kind::kind_double))
+      throw std::invalid_argument("--faithful needs --method fast and --scalar double");
     return run_hinge_stream(o->input, o->output, "eval", [&](const std::string& id_json, const std::array<double, 12>& x) {
-      std::string line = io::result_line(id_json, methods::evaluate_hinge(method, scalar, x));
+      std::string line = io::result_line(id_json, o->faithful ? fast::faithful_derivatives_rounded(x)
+                                                              : methods::evaluate_hinge(method, scalar, x));
       if (o->cond) {
         const auto kappa = oracle::conformance::expected({"", "", x}).conditioning.kappa;
         line.pop_back();  // '}'

@@ -16,6 +16,8 @@ namespace hinge::fast::detail {
 void hinge_kernel_double(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);
 // Hinges x[0 .. count) into out[0 .. count), two at a time where the processor has AVX-512.
 void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, bool want_hessian, HingeDerivatives<double>* out);
+// The faithful mode (hinge/fast/faithful.hpp) of the same kernel.
+void hinge_kernel_faithful(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);
 
 
 }  // namespace hinge::fast::detail

@@ -23,8 +23,12 @@
 
 #if defined(__GNUC__)
 #define HINGE_FAST_INLINE inline __attribute__((always_inline))
+// The same for a lambda: written after its parameter list. A lambda is a function of its own, compiled
+// for the baseline unless inlined into the function (with its target, dispatch.hpp) that holds it.
+#define HINGE_FAST_LAMBDA_INLINE __attribute__((always_inline))
 #else
 #define HINGE_FAST_INLINE inline
+#define HINGE_FAST_LAMBDA_INLINE
 #endif
 #if defined(__GNUC__) && !defined(__clang__)
 #define HINGE_FAST_UNROLL _Pragma("GCC unroll 3")

@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "dispatch.hpp"
+#include "hinge/fast/faithful.hpp"
 #include "hinge/fast/isa.hpp"
 #include "double_kernel.hpp"
 #include "hinge_kernel_lanes.hpp"
@@ -41,6 +42,29 @@ HINGE_FAST_TARGET_V3 void rescaled_v3(const std::array<double, 12>* const* x, bo
                                       LanesOutcome* o) {
   lanes_kernel<Ymm8, true>(x, h, out, o);
 }
+HINGE_FAST_TARGET_V4 void faithful_v4(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+                                      LanesOutcome* o) {
+  lanes_kernel<Zmm8, false, 1, true>(x, h, out, o);
+}
+HINGE_FAST_TARGET_V4 void faithful_rescaled_v4(const std::array<double, 12>* const* x, bool h,
+                                               HingeDerivatives<double>* const* out, LanesOutcome* o) {
+  lanes_kernel<Zmm8, true, 1, true>(x, h, out, o);
+}
+HINGE_FAST_TARGET_V3 void faithful_v3(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+                                      LanesOutcome* o) {
+  lanes_kernel<Ymm8, false, 1, true>(x, h, out, o);
+}
+HINGE_FAST_TARGET_V3 void faithful_rescaled_v3(const std::array<double, 12>* const* x, bool h,
+                                               HingeDerivatives<double>* const* out, LanesOutcome* o) {
+  lanes_kernel<Ymm8, true, 1, true>(x, h, out, o);
+}
+void faithful_baseline(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out, LanesOutcome* o) {
+  lanes_kernel<Sse8, false, 1, true>(x, h, out, o);
+}
+void faithful_rescaled_baseline(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+                                LanesOutcome* o) {
+  lanes_kernel<Sse8, true, 1, true>(x, h, out, o);
+}
 void kernel_baseline(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out, LanesOutcome* o) {
   lanes_kernel<Sse8, false>(x, h, out, o);
 }
@@ -52,18 +76,24 @@ void rescaled_baseline(const std::array<double, 12>* const* x, bool h, HingeDeri
 // pair: two hinges at once (lanes.hpp, Twice), for AVX-512 only: there one hinge's lanes are one register
 // of 32, and two at once take 4-8% less time per hinge than one by one (docs/performance-log.md); AVX2 and
 // the baseline hold one hinge's lanes in two registers of 16 already.
+// faithful, faithful_rescaled: the faithful mode (hinge/fast/faithful.hpp).
 struct Kernels {
-  Kernel common, rescaled, pair;
+  Kernel common, rescaled, pair, faithful, faithful_rescaled;
 };
-constexpr Kernels kAvx512{kernel_v4, rescaled_v4, pair_v4}, kAvx2{kernel_v3, rescaled_v3, nullptr},
-    kBaseline{kernel_baseline, rescaled_baseline, nullptr};
+constexpr Kernels kAvx512{kernel_v4, rescaled_v4, pair_v4, faithful_v4, faithful_rescaled_v4},
+    kAvx2{kernel_v3, rescaled_v3, nullptr, faithful_v3, faithful_rescaled_v3},
+    kBaseline{kernel_baseline, rescaled_baseline, nullptr, faithful_baseline, faithful_rescaled_baseline};
 
-// The outcome `o` of the vector work on x (its results already in `out`), completed.
+void evaluate_faithful(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian,
+                       HingeDerivatives<double>& out);
+
+// The outcome `o` of the vector work on x (its results already in `out`), completed (`faithful`: of the
+// faithful kernels).
 void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out,
-              LanesOutcome o) {
+              LanesOutcome o, bool faithful = false) {
   const std::array<double, 12>* xs[1] = {&x};
   HingeDerivatives<double>* outs[1] = {&out};
-  if (o.status == LanesOutcome::rescale) [[unlikely]] kernels.rescaled(xs, want_hessian, outs, &o);
+  if (o.status == LanesOutcome::rescale) [[unlikely]] (faithful ? kernels.faithful_rescaled : kernels.rescaled)(xs, want_hessian, outs, &o);
   if (o.status == LanesOutcome::not_finite) check_finite(x);  // throws, naming the coordinate
   if (o.status == LanesOutcome::zero_hinge_edge) throw_zero_hinge_edge();
   // Validity and the sign, exactly where the filters could not decide (the generic kernel's checks, in
@@ -79,7 +109,8 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
   } else {
     out.on_branch_cut = false;
     // (copysign rather than a branch on the sign, which is data)
-    out.theta = std::copysign(2 * std::atan2(o.s_minus, o.s_plus), double(sign));
+    out.theta = faithful ? faithful_theta(x, sign, o.exponent, o.faithful)
+                         : std::copysign(2 * std::atan2(o.s_minus, o.s_plus), double(sign));
     out.tan_half_theta = std::copysign(o.tan_half_theta, double(sign));  // eq. (12)
   }
   if (!want_hessian) out.hess.setZero();
@@ -89,7 +120,15 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
       for (int i = 0; i < 144; ++i) out.hess.data()[i] = std::ldexp(out.hess.data()[i], -2 * o.exponent);
   }
   if (!o.fast_range) [[unlikely]] wide_range_kernel(x, want_hessian, out);  // the same checks passed above
-  else if (o.short_hinge_edge) [[unlikely]] accurate_kernel(x, want_hessian, out);
+  else if (o.short_hinge_edge) [[unlikely]] accurate_kernel(x, want_hessian, out);  // never in the faithful mode
+  // Nearly flat (|theta| < 2^-40): |n - n~| is theta itself, and the double-double normals' absolute
+  // error of ~2^-104 is 2^-102 / theta relative (18.7 units of 2^-53 measured at theta ~ 1e-16): theta
+  // is the faithful mode's, from the exact hinge determinant (faithful_theta.hpp).
+  if (!faithful && sign != 0 && o.fast_range && o.s_minus < 0x1p-40) [[unlikely]] {
+    HingeDerivatives<double> f;
+    evaluate_faithful(kernels, x, false, f);
+    out.theta = f.theta;
+  }
 }
 
 // The vector work of `kernels` on x, completed.
@@ -99,6 +138,16 @@ void evaluate(const Kernels& kernels, const std::array<double, 12>& x, bool want
   LanesOutcome o;
   kernels.common(xs, want_hessian, outs, &o);
   complete(kernels, x, want_hessian, out, o);
+}
+
+// The faithful mode (hinge/fast/faithful.hpp) of `kernels` on x, completed.
+void evaluate_faithful(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian,
+                       HingeDerivatives<double>& out) {
+  const std::array<double, 12>* xs[1] = {&x};
+  HingeDerivatives<double>* outs[1] = {&out};
+  LanesOutcome o;
+  kernels.faithful(xs, want_hessian, outs, &o);
+  complete(kernels, x, want_hessian, out, o, true);
 }
 
 // Hinges [0, count) of x into out, two at a time where `kernels` can (then out[i] and out[i + 1] are
@@ -135,6 +184,10 @@ void hinge_kernel_double(const std::array<double, 12>& x, bool want_hessian, Hin
 
 void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, bool want_hessian, HingeDerivatives<double>* out) {
   evaluate_all(best_kernels(), x, count, want_hessian, out);
+}
+
+void hinge_kernel_faithful(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
+  evaluate_faithful(best_kernels(), x, want_hessian, out);
 }
 
 }  // namespace hinge::fast::detail
@@ -179,6 +232,12 @@ Isa active_isa() {
 bool hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
   if (!isa_available(isa)) return false;
   detail::evaluate(detail::kernels_for(isa), x, want_hessian, out);
+  return true;
+}
+
+bool faithful_hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
+  if (!isa_available(isa)) return false;
+  detail::evaluate_faithful(detail::kernels_for(isa), x, want_hessian, out);
   return true;
 }
 

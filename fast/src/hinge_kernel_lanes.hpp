@@ -31,6 +31,7 @@
 #include <cmath>
 #include <limits>
 
+#include "faithful_theta.hpp"
 #include "generic_kernel.hpp"
 #include "lanes.hpp"
 
@@ -48,6 +49,51 @@ template <int p0, int p1, int p2, int p3, class L>
 HINGE_FAST_INLINE DoubleDoubleOf<L> permute_dd(const DoubleDoubleOf<L>& a) {
   return {permute<p0, p1, p2, p3>(a.hi), permute<p0, p1, p2, p3>(a.lo)};
 }
+// Eqs. (4) and (6) are written once, for the plain kernel's lanes L and for the faithful mode's
+// double-doubles of them (DoubleDoubleOf<L>, exact.hpp's arithmetic); these are the operations both need.
+template <int j, class L>
+HINGE_FAST_INLINE L spread_of(const L& a) {
+  return spread<j>(a);
+}
+template <int j, class L>
+HINGE_FAST_INLINE DoubleDoubleOf<L> spread_of(const DoubleDoubleOf<L>& a) {
+  return spread_dd<j>(a);
+}
+template <class L>
+HINGE_FAST_INLINE L swapped(const L& a) {
+  return swap_halves(a);
+}
+template <class L>
+HINGE_FAST_INLINE DoubleDoubleOf<L> swapped(const DoubleDoubleOf<L>& a) {
+  return {swap_halves(a.hi), swap_halves(a.lo)};
+}
+template <int b0, int b1, int b2, int b3, class L>
+HINGE_FAST_INLINE L blend_of(const L& a, const L& b) {
+  return blend<b0, b1, b2, b3>(a, b);
+}
+template <int b0, int b1, int b2, int b3, class L>
+HINGE_FAST_INLINE DoubleDoubleOf<L> blend_of(const DoubleDoubleOf<L>& a, const DoubleDoubleOf<L>& b) {
+  return blend_dd<b0, b1, b2, b3>(a, b);
+}
+// a m, lane by lane, for m of -1, 0, 1 and powers of two (exact).
+template <class L>
+HINGE_FAST_INLINE L scaled_exactly(const L& a, const L& m) {
+  return a * m;
+}
+template <class L>
+HINGE_FAST_INLINE DoubleDoubleOf<L> scaled_exactly(const DoubleDoubleOf<L>& a, const L& m) {
+  return {a.hi * m, a.lo * m};
+}
+// The value rounded to double: a double-double from exact.hpp's operations is normalized (hi = fl(hi + lo)).
+template <class L>
+HINGE_FAST_INLINE L rounded(const L& a) {
+  return a;
+}
+template <class L>
+HINGE_FAST_INLINE L rounded(const DoubleDoubleOf<L>& a) {
+  return a.hi;
+}
+
 // Lanes 0, 1, 2 of each half: lane j of a, b and c (lane 3: lane j of a).
 template <int j, class L>
 HINGE_FAST_INLINE L lanes_of(const L& a, const L& b, const L& c) {
@@ -97,17 +143,20 @@ HINGE_FAST_INLINE void store_gradient(const L g[3], double* grad) {
 }
 
 // Eq. (6) from the two triangles' summaries in lanes (n: n[c] in every lane of a half, nv: n in lanes
-// 0 .. 2; q: lane J of q[c] is q_J[c]; a: lane j is a_j; rv: r_0 in lanes 0 .. 2), into `hess` (12 x 12, column-major; the
-// matrix is symmetric). Column by column of each vertex; a column's four blocks are stored four
-// doubles at a time, each store's fourth double overwritten by the next (the last block as the last
-// four doubles of the column).
-template <class L>
-HINGE_FAST_INLINE void lanes_hessian(const L n[3], const L nv, const L q[3], const L a, const L rv, double* hess) {
-  const L c = a * L::make(-1, 1, 1, 0, -1, 1, 1, 0);  // eq. (4): grad_{x_I} theta = c_I n on each triangle
-  const L cb[3] = {spread<0>(c), spread<1>(c), spread<2>(c)};
+// 0 .. 2; q: lane J of q[c] is q_J[c]; a: lane j is a_j; rv: r_0 in lanes 0 .. 2), into `hess` (12 x 12,
+// column-major; the matrix is symmetric). T is the lanes L (the plain kernel: each product and sum
+// rounded to double) or DoubleDoubleOf<L> (the faithful mode: every operation in double-double, each
+// entry rounded to double once at the end). Column by column of each vertex; a column's four blocks are
+// stored four doubles at a time, each store's fourth double overwritten by the next (the last block as
+// the last four doubles of the column).
+template <class T>
+HINGE_FAST_INLINE void lanes_hessian(const T n[3], const T nv, const T q[3], const T a, const T rv, double* hess) {
+  using L = decltype(rounded(a));
+  const T c = scaled_exactly(a, L::make(-1, 1, 1, 0, -1, 1, 1, 0));  // eq. (4): grad_{x_I} theta = c_I n on each triangle
+  const T cb[3] = {spread_of<0>(c), spread_of<1>(c), spread_of<2>(c)};
   // The vectors q_J with their components in lanes 0 .. 2 of each half (lane 3: don't care).
-  const L qv[3] = {lanes_of<0>(q[0], q[1], q[2]), lanes_of<1>(q[0], q[1], q[2]), lanes_of<2>(q[0], q[1], q[2])};
-  const L rb[3] = {spread<0>(rv), spread<1>(rv), spread<2>(rv)};
+  const T qv[3] = {lanes_of<0>(q[0], q[1], q[2]), lanes_of<1>(q[0], q[1], q[2]), lanes_of<2>(q[0], q[1], q[2])};
+  const T rb[3] = {spread_of<0>(rv), spread_of<1>(rv), spread_of<2>(rv)};
   const Double4 zero{0, 0, 0, 0};
   auto store_column = [](double* col, Double4 b0, Double4 b1, Double4 b2, Double4 b3) {
     store4(col, b0);
@@ -117,24 +166,39 @@ HINGE_FAST_INLINE void lanes_hessian(const L n[3], const L nv, const L q[3], con
   };
   HINGE_FAST_UNROLL
   for (int k = 0; k < 3; ++k) {
-    const L nq[3] = {nv * spread<0>(q[k]), nv * spread<1>(q[k]), nv * spread<2>(q[k])};  // n q_I[k]
-    auto block = [&](int I, int J) { return cb[I] * (qv[J] * n[k]) + cb[J] * nq[I]; };  // eq. (6): upper | lower
+    const T nq[3] = {nv * spread_of<0>(q[k]), nv * spread_of<1>(q[k]), nv * spread_of<2>(q[k])};  // n q_I[k]
+    auto block = [&](int I, int J) HINGE_FAST_LAMBDA_INLINE { return cb[I] * (qv[J] * n[k]) + cb[J] * nq[I]; };  // eq. (6): upper | lower
     // eq. (6): column k of x0 (H00, H10, H20, 0) and of x3 (0, H13, H23, H33: the lower triangle's H10, H20, H00).
-    const L b00 = block(0, 0), b10 = block(1, 0), b20 = block(2, 0);
+    const L b00 = rounded(block(0, 0)), b10 = rounded(block(1, 0)), b20 = rounded(block(2, 0));
     store_column(hess + 12 * k, b00.lo4(), b10.lo4(), b20.lo4(), zero);
     store_column(hess + 12 * (9 + k), zero, b10.hi4(), b20.hi4(), b00.hi4());
     // eq. (6): columns k of x1 and x2: H0J, both triangles' H1J and H2J with -+ the symmetric part of N_0 + N~_0,
     // the lower triangle's H0J as H3J.
-    const L x1 = nv * rb[k], x2 = rv * n[k];  // n r_0[k], r_0 n[k]
-    const L sym = ((x1 + swap_halves(x1)) + (x2 + swap_halves(x2))) * 0.5;
+    const T x1 = nv * rb[k], x2 = rv * n[k];  // n r_0[k], r_0 n[k]
+    const T sym = scaled_exactly((x1 + swapped(x1)) + (x2 + swapped(x2)), L::broadcast(0.5));
     HINGE_FAST_UNROLL
     for (int J = 1; J <= 2; ++J) {
-      const L b0 = block(0, J), b1 = block(1, J), b2 = block(2, J);
-      const L s1 = b1 + swap_halves(b1), s2 = b2 + swap_halves(b2);
-      store_column(hess + 12 * (3 * J + k), b0.lo4(), (J == 1 ? s1 - sym : s1 + sym).lo4(),
-                   (J == 2 ? s2 - sym : s2 + sym).lo4(), b0.hi4());
+      const T b1 = block(1, J), b2 = block(2, J);
+      const L b0 = rounded(block(0, J));
+      const T s1 = b1 + swapped(b1), s2 = b2 + swapped(b2);
+      store_column(hess + 12 * (3 * J + k), b0.lo4(), rounded(J == 1 ? s1 - sym : s1 + sym).lo4(),
+                   rounded(J == 2 ? s2 - sym : s2 + sym).lo4(), b0.hi4());
     }
   }
+}
+
+// Eq. (4) into grad[0 .. 11] (x0.x, ..., x3.z): grad_x0 = -a_0 n, grad_x1 = a_1 n + a~_1 n~, grad_x2 = a_2
+// n + a~_2 n~, grad_x3 = -a~_0 n~, lane by lane, then interleaved. T as for lanes_hessian.
+template <class T>
+HINGE_FAST_INLINE void lanes_gradient(const T n[3], const T a, double* grad) {
+  using L = decltype(rounded(a));
+  L g[3];
+  HINGE_FAST_UNROLL
+  for (int c = 0; c < 3; ++c) {
+    const T t = a * n[c];
+    g[c] = rounded(blend_of<1, 0, 0, 0>(t + swapped(t), -t));  // lanes 0, 1, 2, 4: x0, x1, x2, x3
+  }
+  store_gradient(g, grad);
 }
 
 // What the vector work leaves to the caller: the checks it could not decide, and theta's inputs.
@@ -149,6 +213,7 @@ struct LanesOutcome {
   int exponent = 0;                                   // the edges were scaled by 2^-exponent
   double s_minus = 0, s_plus = 0;                     // |n - n~| = 2 sin(theta/2), |n + n~| = 2 cos(theta/2)
   double tan_half_theta = 0;                          // |tan(theta / 2)|
+  FaithfulTheta faithful;                             // the faithful mode's theta inputs (faithful_theta.hpp)
 };
 
 // pick12 (lanes.hpp) of each hinge's coordinates: W is L (one hinge) or Twice<L> (two).
@@ -165,11 +230,13 @@ HINGE_FAST_INLINE W pick12_of(const double* const* y) {
 // (B = 1): the edges are first brought to M in [1, 2) by a power of two (the rare path, the outcome
 // `rescale` of the common one: M outside [2^-200, 2^200], as in the generic kernel, hinge_kernel.hpp, and
 // the same numbers). With B = 2, a hinge that needs a rare path (not finite, x1 == x2, rescaled) makes
-// both outcomes `alone`, and nothing is written.
-template <class L, bool kRescaled, int B = 1>
+// both outcomes `alone`, and nothing is written. `kFaithful` (B = 1): the faithful mode
+// (hinge/fast/faithful.hpp): the per-triangle quantities stay double-doubles and eqs. (4) and (6) run in
+// double-double, each output rounded once; no short-hinge-edge path is needed.
+template <class L, bool kRescaled, int B = 1, bool kFaithful = false>
 HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, bool want_hessian,
                                     HingeDerivatives<double>* const* out, LanesOutcome* o) {
-  static_assert(B == 1 || (B == 2 && !kRescaled));
+  static_assert(B == 1 || (B == 2 && !kRescaled && !kFaithful));
   using W = std::conditional_t<B == 1, L, Twice<L>>;
   using D = DoubleDoubleOf<W>;
   using V = Vec<D>;  // x, y, z
@@ -264,7 +331,8 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   // several times their result, and the rounding of the per-triangle quantities to double shows (up to 9
   // units of 2^-53 measured, against 3.0 above 1/8): such a hinge is evaluated again by the long double
   // kernel (double-double stencil, generic_kernel.hpp) and rounded to double (docs/numerics.md).
-  each([&](auto h) { o[h].short_hinge_edge = 64 * part<h>(edge_squares).lane(0) < largest_lane(part<h>(edge_squares)); });
+  if constexpr (!kFaithful)
+    each([&](auto h) { o[h].short_hinge_edge = 64 * part<h>(edge_squares).lane(0) < largest_lane(part<h>(edge_squares)); });
   const W y = one / root(estimates);  // lanes 0, 1: y_S, y_L (2, 3: 1)
   const W half_e = rsqrt_correction(D{blend<0, 0, 1, 1>(dots.hi, one), blend<0, 0, 1, 1>(dots.lo, nothing)}, y);  // e/2
   const D yy = two_prod(permute<0, 0, 1, 1>(y), permute<0, 1, 1, 1>(y));  // y_S^2, y_S y_L, y_L^2
@@ -275,14 +343,28 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   const W lower_negated = W::make(1, 1, 1, 1, -1, -1, -1, -1);
   const D nw = times_corrected(Cv, spread<0>(y), spread<0>(half_e));  // n | -n~, double-double
   const W nv = nw.hi * lower_negated;       // n | n~ (the lower labels run clockwise)
-  const W n[3] = {spread<0>(nv), spread<1>(nv), spread<2>(nv)};
-  W q[3];
-  HINGE_FAST_UNROLL
-  for (int c = 0; c < 3; ++c) q[c] = round_product(X[c], invS);  // eq. (5): lane j q_j = m_j / h_j
-  // eq. (5): N_0 = n r_0^T, r_0 = m_0 / l_0^2, with m_0 = X_0 K (never 1 / (l_0^3 2A), which can overflow)
-  const W rv = round_product(lanes_of<0>(X[0], X[1], X[2]) * K, RL);
-  // eq. (4): a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 . e_0) / (l_0 2A)
-  const W a = round_product(permute_dd<1, 3, 2, 3>(dots), K) * W::make(1, -1, -1, 0, 1, -1, -1, 0);
+  // The per-triangle quantities n, q_j, r_0, a_j, each rounded to double once (the faithful mode: kept in
+  // double-double).
+  auto summaries = [&](auto product) HINGE_FAST_LAMBDA_INLINE {
+    using T = decltype(product(invS, invS));
+    struct {
+      T nv, n[3], q[3], rv, a;
+    } s;
+    if constexpr (std::is_same_v<T, W>) s.nv = nv;
+    else s.nv = scaled_exactly(nw, lower_negated);
+    s.n[0] = spread_of<0>(s.nv), s.n[1] = spread_of<1>(s.nv), s.n[2] = spread_of<2>(s.nv);
+    HINGE_FAST_UNROLL
+    for (int c = 0; c < 3; ++c) s.q[c] = product(X[c], invS);  // eq. (5): lane j q_j = m_j / h_j
+    // eq. (5): N_0 = n r_0^T, r_0 = m_0 / l_0^2, with m_0 = X_0 K (never 1 / (l_0^3 2A), which can overflow)
+    s.rv = product(lanes_of<0>(X[0], X[1], X[2]) * K, RL);
+    // eq. (4): a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 . e_0) / (l_0 2A)
+    s.a = scaled_exactly(product(permute_dd<1, 3, 2, 3>(dots), K), W::make(1, -1, -1, 0, 1, -1, -1, 0));
+    return s;
+  };
+  const auto summary = [&]() HINGE_FAST_LAMBDA_INLINE {
+    if constexpr (kFaithful) return summaries([](const D& f, const D& g) HINGE_FAST_LAMBDA_INLINE { return f * g; });
+    else return summaries([](const D& f, const D& g) HINGE_FAST_LAMBDA_INLINE { return round_product(f, g); });
+  }();
 
   // Validity: each triangle's area is certainly nonzero when some component k of C passes the area
   // filter (lanes.hpp, area_certainty) with perm_k = |f2_i f0_j| + |f2_j f0_i|. Otherwise the caller
@@ -343,25 +425,32 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
       o[h].tan_half_theta = std::sqrt(part<h>(lengths2).lane(0) / part<h>(lengths2).lane(4));
       o[h].folded = part<h>(nn).lane(0) < 0;
     });
+    if constexpr (kFaithful) {
+      const W low = (s01.lo + s012.lo) + sum_of_three(small);  // lengths2 = s012.hi + low, rounded
+      FaithfulTheta& f = o[0].faithful;
+      f.minus2 = {s012.hi.lane(0), low.lane(0)};
+      f.plus2 = {s012.hi.lane(4), low.lane(4)};
+      f.l0_squared = {dots.hi.lane(1), dots.lo.lane(1)};
+      f.K = {K.hi.lane(0), K.lo.lane(0)};
+      f.K_lower = {K.hi.lane(4), K.lo.lane(4)};
+    }
   }
 
-  // Eq. (4): grad_x0 = -a_0 n, grad_x1 = a_1 n + a~_1 n~, grad_x2 = a_2 n + a~_2 n~, grad_x3 = -a~_0 n~; lane
-  // by lane, then interleaved into x0.x, x0.y, ..., x3.z.
-  W g[3];
-  HINGE_FAST_UNROLL
-  for (int c = 0; c < 3; ++c) {
-    const W t = a * n[c];
-    g[c] = blend<1, 0, 0, 0>(t + swap_halves(t), -t);  // lanes 0, 1, 2, 4: x0, x1, x2, x3
-  }
-  each([&](auto h) {
-    const L gh[3] = {part<h>(g[0]), part<h>(g[1]), part<h>(g[2])};
-    store_gradient(gh, out[h]->grad.data());
-  });
-  if (want_hessian)
+  // Eqs. (4) and (6), hinge by hinge.
+  const auto& s = summary;
+  if constexpr (kFaithful) {
+    lanes_gradient(s.n, s.a, out[0]->grad.data());
+    if (want_hessian) lanes_hessian(s.n, s.nv, s.q, s.a, s.rv, out[0]->hess.data());
+  } else {
     each([&](auto h) {
-      const L nh[3] = {part<h>(n[0]), part<h>(n[1]), part<h>(n[2])}, qh[3] = {part<h>(q[0]), part<h>(q[1]), part<h>(q[2])};
-      lanes_hessian(nh, part<h>(nv), qh, part<h>(a), part<h>(rv), out[h]->hess.data());
+      const L nh[3] = {part<h>(s.n[0]), part<h>(s.n[1]), part<h>(s.n[2])};
+      lanes_gradient(nh, part<h>(s.a), out[h]->grad.data());
+      if (want_hessian) {
+        const L qh[3] = {part<h>(s.q[0]), part<h>(s.q[1]), part<h>(s.q[2])};
+        lanes_hessian(nh, part<h>(s.nv), qh, part<h>(s.a), part<h>(s.rv), out[h]->hess.data());
+      }
     });
+  }
 }
 
 }  // namespace hinge::fast::detail

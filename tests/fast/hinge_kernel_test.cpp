@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "fast_support.hpp"
+#include "hinge/fast/faithful.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/fast/isa.hpp"
 #include "src/generic_kernel.hpp"  // detail::wide_range_kernel
@@ -435,35 +436,41 @@ bool same_bits(const HingeDerivatives<double>& a, const HingeDerivatives<double>
 }
 
 TEST(HingeKernel, EveryInstructionSetGivesTheSameBits) {
+  // The plain kernel and the faithful mode (hinge/fast/faithful.hpp).
   const std::vector<std::array<double, 12>> hinges = same_bits_hinges(test::cases(200));
   int compared = 0;
+  auto kernel = [](bool faithful, Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& d) {
+    return faithful ? faithful_hinge_derivatives(isa, x, want_hessian, d) : hinge_derivatives(isa, x, want_hessian, d);
+  };
   for (const auto& x : hinges)
-    for (bool want_hessian : {true, false}) {
-      HingeDerivatives<double> base;
-      ASSERT_TRUE(hinge_derivatives(Isa::baseline, x, want_hessian, base));
-      for (auto isa : {Isa::avx2, Isa::avx512}) {
-        HingeDerivatives<double> d;
-        if (!hinge_derivatives(isa, x, want_hessian, d)) continue;
-        ++compared;
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(d.theta), std::bit_cast<std::uint64_t>(base.theta)) << test::describe(x);
-        EXPECT_EQ(d.on_branch_cut, base.on_branch_cut);
-        EXPECT_EQ(std::memcmp(d.grad.data(), base.grad.data(), sizeof(double) * 12), 0) << test::describe(x);
-        EXPECT_EQ(std::memcmp(d.hess.data(), base.hess.data(), sizeof(double) * 144), 0) << test::describe(x);
+    for (bool want_hessian : {true, false})
+      for (bool faithful : {false, true}) {
+        HingeDerivatives<double> base;
+        ASSERT_TRUE(kernel(faithful, Isa::baseline, x, want_hessian, base));
+        for (auto isa : {Isa::avx2, Isa::avx512}) {
+          HingeDerivatives<double> d;
+          if (!kernel(faithful, isa, x, want_hessian, d)) continue;
+          ++compared;
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(d.theta), std::bit_cast<std::uint64_t>(base.theta)) << test::describe(x);
+          EXPECT_EQ(d.on_branch_cut, base.on_branch_cut);
+          EXPECT_EQ(std::memcmp(d.grad.data(), base.grad.data(), sizeof(double) * 12), 0) << test::describe(x);
+          EXPECT_EQ(std::memcmp(d.hess.data(), base.hess.data(), sizeof(double) * 144), 0) << test::describe(x);
+        }
       }
-    }
   RecordProperty("comparisons", std::to_string(compared));
   // The same errors, with the same messages.
   for (const auto& bad : {std::array<double, 12>{0.5, 1, 0, 1, 0, 0, 1, 0, 0, 0.5, -1, 0},
                           std::array<double, 12>{0, 0, 0, 1, 0, 0, 2, 0, 0, 0.5, -1, 0},
                           std::array<double, 12>{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, NAN, 0}})
-    for (auto isa : {Isa::baseline, Isa::avx2, Isa::avx512}) {
-      HingeDerivatives<double> d;
-      bool available = true;  // stays true when the kernel throws
-      const std::string message = input_error([&] { available = hinge_derivatives(isa, bad, true, d); });
-      if (available) {
-        EXPECT_EQ(message, input_error([&] { hinge_derivatives<double>(bad); }));
+    for (auto isa : {Isa::baseline, Isa::avx2, Isa::avx512})
+      for (bool faithful : {false, true}) {
+        HingeDerivatives<double> d;
+        bool available = true;  // stays true when the kernel throws
+        const std::string message = input_error([&] { available = kernel(faithful, isa, bad, true, d); });
+        if (available) {
+          EXPECT_EQ(message, input_error([&] { hinge_derivatives<double>(bad); }));
+        }
       }
-    }
 }
 
 // Many hinges at once (with AVX-512 two at a time: lanes.hpp, Twice) give each hinge the bits it gets

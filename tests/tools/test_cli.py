@@ -83,6 +83,30 @@ def test_cond_gives_the_tolerance_policy_condition_numbers():
     assert code == 0 and "kappa" not in lines(out)[0] and "error" in lines(out)[0]
 
 
+def test_faithful_is_within_one_unit_of_the_certified_values_in_every_category():
+    # The contract: --faithful within 1 unit of 2^-53 of the certified values, normwise per output group
+    # (the committed vectors hold them), in every category; and only with --method fast --scalar double.
+    vectors_dir = os.path.join(os.path.dirname(EXAMPLES), "..", "conformance", "hinges")
+    names = sorted(n for n in os.listdir(vectors_dir) if n.endswith(".jsonl"))
+    assert len(names) >= 9, names
+    for name in names:
+        with open(os.path.join(vectors_dir, name)) as f:
+            text = f.read()
+        want = lines(text)
+        code, out, _ = run(["eval", "--method", "fast", "--faithful"], text)
+        got = lines(out)
+        assert code == 0 and [g["id"] for g in got] == [w["id"] for w in want], name
+        for g, w in zip(got, want):
+            for k in ("theta", "grad", "hess"):
+                have, certified = (g[k], w[k]) if k != "theta" else ([g[k]], [w[k]])
+                num = math.sqrt(sum((a - b) ** 2 for a, b in zip(have, certified)))
+                den = math.sqrt(sum(b * b for b in certified))
+                assert num <= 2.0**-53 * den, (w["id"], k, num / den / 2.0**-53 if den else num)
+    for wrong in (["--method", "reference"], ["--method", "fast", "--scalar", "long-double"]):
+        code, _, err = run(["eval", "--faithful"] + wrong, "")
+        assert code == 2 and "--faithful" in err, (wrong, code, err)
+
+
 def run_with_isa(isa, args, stdin=""):
     return run(args, stdin, env=dict(os.environ, HINGE_ISA=isa), timeout=300)
 
