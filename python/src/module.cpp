@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "hinge/io/jsonl.hpp"
+#include "hinge/fast/faithful.hpp"
 #include "hinge/methods/methods.hpp"
 #include "hinge/oracle/oracle.hpp"
 #include "hinge/oracle/output_line.hpp"
@@ -146,13 +147,15 @@ std::unique_lock<std::mutex> lock_if_mpfr(const hinge::ScalarType& scalar) {
   return {};
 }
 
-Result eval(const py::object& x, const py::object& method_name, const py::object& scalar_name) {
+Result eval(const py::object& x, const py::object& method_name, const py::object& scalar_name, bool faithful) {
   const auto method = as_method(method_name);
   const auto scalar = as_scalar(scalar_name);
+  if (faithful && (method != hinge::methods::Method::fast || scalar.kind != hinge::ScalarType::Kind::kind_double))
+    throw py::value_error("faithful=True needs method='fast' and scalar='double'");
   std::unique_lock<std::mutex> lock;
   return run_hinges(x, [&](std::size_t i, const std::array<double, 12>& xi, double* t, double* g, double* h) {
     if (i == 0) lock = lock_if_mpfr(scalar);  // without the GIL (run_hinges released it)
-    store(hinge::methods::evaluate_hinge(method, scalar, xi), t, g, h);
+    store(faithful ? hinge::fast::faithful_derivatives_rounded(xi) : hinge::methods::evaluate_hinge(method, scalar, xi), t, g, h);
   });
 }
 
@@ -345,7 +348,7 @@ PYBIND11_MODULE(_hinge, m) {
       .def("__len__", [](const Result& r) { return r.theta.shape(0); })
       .def("__repr__", [](const Result& r) { return "<hinge.Result of " + std::to_string(r.theta.shape(0)) + " hinges>"; });
   const hinge::oracle::Options defaults;
-  m.def("eval", &eval, "x"_a, "method"_a = "fast", "scalar"_a = "double");
+  m.def("eval", &eval, "x"_a, "method"_a = "fast", "scalar"_a = "double", "faithful"_a = false);
   m.def("oracle", &oracle, "x"_a);
   m.def("hessian", &hessian, "vertices"_a, "faces"_a, "rest"_a = py::none(), "energy"_a = "tan", "k"_a = 1.0,
         "method"_a = "fast", "threads"_a = 0, "scalar"_a = "double", "allow_no_hinges"_a = false);

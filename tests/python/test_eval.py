@@ -32,6 +32,17 @@ def test_eval_is_bit_for_bit_the_command(command, conformance_file, method, scal
     assert_same_as_command(hinge.eval(read_x(conformance_file), method=method, scalar=scalar), lines)
 
 
+def test_faithful_is_bit_for_bit_the_command(command, conformance_file):
+    lines = read_results(command("eval", "--method", "fast", "--faithful", "--input", conformance_file))
+    assert_same_as_command(hinge.eval(read_x(conformance_file), method="fast", faithful=True), lines)
+
+
+@pytest.mark.parametrize("kwargs", [{"method": "reference"}, {"scalar": "long-double"}])
+def test_faithful_with_another_method_or_scalar_raises_value_error(kwargs):
+    with pytest.raises(ValueError, match="faithful"):
+        hinge.eval(np.zeros((1, 12)), faithful=True, **kwargs)
+
+
 def test_a_single_hinge_and_any_float_dtype_and_layout_are_accepted(conformance_file):
     x = read_x(conformance_file)[:8]
     expected = hinge.eval(x)
