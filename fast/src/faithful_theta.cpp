@@ -51,10 +51,9 @@ struct Integers {
   Integers& operator=(const Integers&) = delete;
 };
 
-// theta nearly flat: sin theta = |D| l_0^3 K K~, cos theta = 1 - |n - n~|^2 / 2, in float128, with
-// D = -det[x2 - x1, x0 - x1, x3 - x1] exact: every coordinate an integer times 2^E (Integers), D an
-// integer times 2^3E.
-double near_flat_theta(const std::array<double, 12>& x, int exponent, const FaithfulTheta& f) {
+}  // namespace
+
+std::array<double, 2> exact_hinge_determinant(const std::array<double, 12>& x, int exponent) {
   const Integers c(x);
   mpz_t p[3], q[3], r[3], t, D;
   for (int k = 0; k < 3; ++k) {
@@ -70,19 +69,27 @@ double near_flat_theta(const std::array<double, 12>& x, int exponent, const Fait
     mpz_submul(t, q[j], r[i]);
     mpz_submul(D, t, p[k]);
   }
-  // D 2^(3E - 3 exponent) (the edges' scale) as a double-double: its nearest double and the rest.
+  // D 2^(3E - 3 exponent) as a double-double: its nearest double and the rest.
   mpfr_t w;
   mpfr_init2(w, 128);
   mpfr_set_z_2exp(w, D, 3 * (c.E - exponent), MPFR_RNDN);
-  mpfr_abs(w, w, MPFR_RNDN);
   const double hi = mpfr_get_d(w, MPFR_RNDN);
   mpfr_sub_d(w, w, hi, MPFR_RNDN);
   const double lo = mpfr_get_d(w, MPFR_RNDN);
   mpfr_clear(w);
   for (int k = 0; k < 3; ++k) mpz_clears(p[k], q[k], r[k], static_cast<mpz_ptr>(nullptr));
   mpz_clears(t, D, static_cast<mpz_ptr>(nullptr));
+  return {hi, lo};
+}
+
+namespace {
+
+// theta nearly flat: sin theta = |D| l_0^3 K K~, cos theta = 1 - |n - n~|^2 / 2, in float128, D exact
+// (exact_hinge_determinant).
+double near_flat_theta(const std::array<double, 12>& x, int exponent, const FaithfulTheta& f) {
+  const std::array<double, 2> D = exact_hinge_determinant(x, exponent);
   const Quad l0_squared = quad(f.l0_squared);
-  const Quad sine = quad({hi, lo}) * (l0_squared * sqrt(l0_squared)) * (quad(f.K) * quad(f.K_lower));
+  const Quad sine = abs(quad(D)) * (l0_squared * sqrt(l0_squared)) * (quad(f.K) * quad(f.K_lower));
   const Quad cosine = 1 - quad(f.minus2) / 2;
   return static_cast<double>(atan2(sine, cosine));
 }

@@ -31,4 +31,11 @@ struct FaithfulTheta {
 //     atan2(sin theta, 1 - |n - n~|^2 / 2) at 128 bits (relative error ~2^-98 from l_0^2, K, K~).
 double faithful_theta(const std::array<double, 12>& x, int sign, int exponent, const FaithfulTheta& f);
 
+// The hinge determinant D = -det[x2 - x1, x0 - x1, x3 - x1] of x (whose sign is theta's), times
+// 2^-3 exponent, as a double-double (hi, lo): computed exactly (GMP integers: every double is an integer
+// times 2^E for the lowest exponent E among the coordinates) and rounded once. With the triangles' doubled
+// areas |N|, |N~| and l_0: sin theta = D l_0 / (|N| |N~|), on nearly flat hinges the one accurate source
+// of theta (hinge_kernel.hpp's generic kernel and the faithful mode use it there).
+std::array<double, 2> exact_hinge_determinant(const std::array<double, 12>& x, int exponent);
+
 }  // namespace hinge::fast::detail

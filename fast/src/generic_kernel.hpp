@@ -30,6 +30,7 @@
 
 #include "columns.hpp"
 #include "exact.hpp"
+#include "faithful_theta.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/reference/hinge_checks.hpp"
 #include "hinge/reference/predicates.hpp"
@@ -329,6 +330,20 @@ HINGE_FAST_INLINE Scalar lanes_combined(const W& a, double sign) {
   }
 }
 
+// Lane l of a wide value in Scalar (DD2: hi + lo).
+template <class Scalar, class W>
+HINGE_FAST_INLINE Scalar lane_value(const W& a, int l) {
+  if constexpr (std::is_same_v<W, DD2>) return static_cast<Scalar>(static_cast<Scalar>(a.hi[l]) + static_cast<Scalar>(a.lo[l]));
+  else return static_cast<Scalar>(a[l]);
+}
+
+// The types whose nearly flat theta comes from the exact hinge determinant (hinge_kernel below): those of
+// at most 113 bits, whose normals' difference, absolute error a few units of their precision, would cost
+// theta that many units divided by theta.
+template <class Scalar>
+inline constexpr bool kNearFlatFromDeterminant = std::is_same_v<Scalar, long double> || std::is_same_v<Scalar, dd> ||
+                                                  std::is_same_v<Scalar, float128> || std::is_same_v<Scalar, bin128>;
+
 // 2^-2m for a normal m = M in [2^m, 2^(m+1)) with |m| <= 500 (exact, from the exponent bits).
 HINGE_FAST_INLINE double inverse_square_power_of_two(double M) {
   const std::uint64_t biased = (std::bit_cast<std::uint64_t>(M) >> 52) & 0x7ff;  // m + 1023
@@ -520,7 +535,18 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
     out.tan_half_theta = folded ? Scalar(std::numeric_limits<Scalar>::infinity()) : Scalar(0);
   } else {
     out.on_branch_cut = false;
-    const Scalar t = 2 * atan2(s_minus, s_plus);
+    Scalar t = 2 * atan2(s_minus, s_plus);
+    // Nearly flat (|theta| < 2^-20): |n - n~| is theta itself, and the normals' absolute error of a few
+    // units of the type's precision is 1/theta times that relative (long double lost 312 units of 2^-53, dd
+    // 949, at theta ~ 1e-19): sin theta = |D| l_0 / (|N| |N~|) with D exact (faithful_theta.hpp).
+    if constexpr (kNearFlatFromDeterminant<Scalar> && !kExactCross)
+      if (s_minus < Scalar(0x1p-20)) [[unlikely]] {
+        using std::abs;
+        const std::array<double, 2> D = exact_hinge_determinant(x, exponent);
+        const Scalar sine = abs(Scalar(Scalar(D[0]) + Scalar(D[1]))) * sqrt(lane_value<Scalar>(L0, 0)) /
+                            (sqrt(lane_value<Scalar>(S, 0)) * sqrt(lane_value<Scalar>(S, 1)));
+        t = atan2(sine, Scalar(1 - s_minus * s_minus / 2));
+      }
     out.theta = sign < 0 ? Scalar(-t) : t;
     const Scalar tan_half = s_minus / s_plus;  // eq. (12)
     out.tan_half_theta = sign < 0 ? Scalar(-tan_half) : tan_half;
@@ -568,16 +594,6 @@ template <class Scalar>
 [[gnu::noinline]] void wide_range_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<Scalar>& out) {
   HingeDerivatives<long double> w;
   hinge_kernel<long double, true>(x, want_hessian, w);
-  round_into(w, out);
-}
-
-// The double kernel's accurate path for a hinge edge below 1/8 of the longest edge (hinge_kernel_lanes.hpp,
-// LanesOutcome::short_hinge_edge): the long double kernel (its stencil in double-double, DD2) rounded to
-// double once. Not inlined: rare on meshes (a well-shaped triangle's edges are all above 0.15 of its
-// longest).
-[[gnu::noinline]] inline void accurate_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
-  HingeDerivatives<long double> w;
-  hinge_kernel<long double>(x, want_hessian, w);
   round_into(w, out);
 }
 

@@ -5,6 +5,7 @@
 // operations, -ffp-contract=off, and fma is exact on all three). The vector work makes no call; its
 // outcome is completed here (exact decisions, atan2, errors), in code common to the three. Many hinges
 // in one call go two at a time where the processor has AVX-512 (pair_v4), each completed as if alone.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -120,11 +121,12 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
       for (int i = 0; i < 144; ++i) out.hess.data()[i] = std::ldexp(out.hess.data()[i], -2 * o.exponent);
   }
   if (!o.fast_range) [[unlikely]] wide_range_kernel(x, want_hessian, out);  // the same checks passed above
-  else if (o.short_hinge_edge) [[unlikely]] accurate_kernel(x, want_hessian, out);  // never in the faithful mode
+  else if (o.short_hinge_edge || (o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6)) [[unlikely]]
+    evaluate_faithful(kernels, x, want_hessian, out);  // |theta| or pi - |theta| below ~2^-6 (never set in it)
   // Nearly flat (|theta| < 2^-40): |n - n~| is theta itself, and the double-double normals' absolute
   // error of ~2^-104 is 2^-102 / theta relative (18.7 units of 2^-53 measured at theta ~ 1e-16): theta
   // is the faithful mode's, from the exact hinge determinant (faithful_theta.hpp).
-  if (!faithful && sign != 0 && o.fast_range && o.s_minus < 0x1p-40) [[unlikely]] {
+  else if (!faithful && sign != 0 && o.s_minus < 0x1p-40) [[unlikely]] {
     HingeDerivatives<double> f;
     evaluate_faithful(kernels, x, false, f);
     out.theta = f.theta;

@@ -207,7 +207,8 @@ struct LanesOutcome {
   enum Status { computed, not_finite, zero_hinge_edge, rescale, alone } status = computed;
   bool certain_upper = false, certain_lower = false;  // the filter certified the area nonzero
   bool fast_range = false;                            // in_range() (hinge_kernel.hpp)
-  bool short_hinge_edge = false;                      // l_0 < 1/8 of the longest edge: the accurate path
+  bool short_hinge_edge = false;                      // l_0 < 1/4 of the longest edge: the faithful mode
+  bool shortish_hinge_edge = false;                   // l_0 < 1/2: the same where nearly flat or folded
   bool folded = false;                                // n . n~ < 0
   int sign = kUndecided;                              // theta's sign by the filter, or kUndecided
   int exponent = 0;                                   // the edges were scaled by 2^-exponent
@@ -327,12 +328,16 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   // (exact.hpp, rsqrt_correction; y_S y_L exact, two_prod).
   const W edge_squares = F[0].hi * F[0].hi + F[1].hi * F[1].hi + F[2].hi * F[2].hi;  // lane j: |f_j|^2, roughly
   const W estimates = blend<0, 1, 1, 1>(sum_of_three(Cv.hi * Cv.hi), blend<0, 0, 1, 1>(spread<0>(edge_squares), one));
-  // A hinge edge below 1/8 of the longest edge: eq. (6)'s central blocks (H11, H12, H22) then sum terms
-  // several times their result, and the rounding of the per-triangle quantities to double shows (up to 9
-  // units of 2^-53 measured, against 3.0 above 1/8): such a hinge is evaluated again by the long double
-  // kernel (double-double stencil, generic_kernel.hpp) and rounded to double (docs/numerics.md).
+  // A hinge edge below 1/4 of the longest edge, or below 1/2 on a nearly flat or folded hinge: eq. (6)'s
+  // central blocks (H11, H12, H22) then sum terms several times their result, and the rounding of the
+  // per-triangle quantities to double shows (up to 9 units of 2^-53 below 1/8, 4.3 at 0.3 on nearly flat
+  // hinges): such a hinge is evaluated again in the faithful mode (hinge_kernel_double.cpp, docs/numerics.md).
   if constexpr (!kFaithful)
-    each([&](auto h) { o[h].short_hinge_edge = 64 * part<h>(edge_squares).lane(0) < largest_lane(part<h>(edge_squares)); });
+    each([&](auto h) {
+      const double l0_squared = part<h>(edge_squares).lane(0), longest = largest_lane(part<h>(edge_squares));
+      o[h].short_hinge_edge = 16 * l0_squared < longest;
+      o[h].shortish_hinge_edge = 4 * l0_squared < longest;
+    });
   const W y = one / root(estimates);  // lanes 0, 1: y_S, y_L (2, 3: 1)
   const W half_e = rsqrt_correction(D{blend<0, 0, 1, 1>(dots.hi, one), blend<0, 0, 1, 1>(dots.lo, nothing)}, y);  // e/2
   const D yy = two_prod(permute<0, 0, 1, 1>(y), permute<0, 1, 1, 1>(y));  // y_S^2, y_S y_L, y_L^2
