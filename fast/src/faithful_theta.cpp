@@ -53,7 +53,7 @@ struct Integers {
 
 }  // namespace
 
-std::array<double, 2> exact_hinge_determinant(const std::array<double, 12>& x, int exponent) {
+ScaledDeterminant exact_hinge_determinant(const std::array<double, 12>& x, int exponent) {
   const Integers c(x);
   mpz_t p[3], q[3], r[3], t, D;
   for (int k = 0; k < 3; ++k) {
@@ -69,17 +69,25 @@ std::array<double, 2> exact_hinge_determinant(const std::array<double, 12>& x, i
     mpz_submul(t, q[j], r[i]);
     mpz_submul(D, t, p[k]);
   }
-  // D 2^(3E - 3 exponent) as a double-double: its nearest double and the rest.
+  // D 2^(3E - 3 exponent) = (hi + mid + lo) 2^e, the sum in [1/2, 1): its nearest double, the nearest to
+  // the rest, and so on, the exponent apart (D itself may lie outside double's range: 2^1140 on a nearly
+  // flat hinge at 2^400).
   mpfr_t w;
-  mpfr_init2(w, 128);
+  mpfr_init2(w, 160);
   mpfr_set_z_2exp(w, D, 3 * (c.E - exponent), MPFR_RNDN);
-  const double hi = mpfr_get_d(w, MPFR_RNDN);
-  mpfr_sub_d(w, w, hi, MPFR_RNDN);
-  const double lo = mpfr_get_d(w, MPFR_RNDN);
+  ScaledDeterminant result;
+  if (!mpfr_zero_p(w)) {
+    result.e = mpfr_get_exp(w);
+    mpfr_set_exp(w, 0);
+    for (double* part : {&result.hi, &result.mid, &result.lo}) {
+      *part = mpfr_get_d(w, MPFR_RNDN);
+      mpfr_sub_d(w, w, *part, MPFR_RNDN);
+    }
+  }
   mpfr_clear(w);
   for (int k = 0; k < 3; ++k) mpz_clears(p[k], q[k], r[k], static_cast<mpz_ptr>(nullptr));
   mpz_clears(t, D, static_cast<mpz_ptr>(nullptr));
-  return {hi, lo};
+  return result;
 }
 
 namespace {
@@ -87,9 +95,10 @@ namespace {
 // theta nearly flat: sin theta = |D| l_0^3 K K~, cos theta = 1 - |n - n~|^2 / 2, in float128, D exact
 // (exact_hinge_determinant).
 double near_flat_theta(const std::array<double, 12>& x, int exponent, const FaithfulTheta& f) {
-  const std::array<double, 2> D = exact_hinge_determinant(x, exponent);
+  const ScaledDeterminant D = exact_hinge_determinant(x, exponent);
   const Quad l0_squared = quad(f.l0_squared);
-  const Quad sine = abs(quad(D)) * (l0_squared * sqrt(l0_squared)) * (quad(f.K) * quad(f.K_lower));
+  const Quad sine = ldexp(abs((Quad(D.hi) + Quad(D.mid)) + Quad(D.lo)), static_cast<int>(D.e)) * (l0_squared * sqrt(l0_squared)) *
+                    (quad(f.K) * quad(f.K_lower));
   const Quad cosine = 1 - quad(f.minus2) / 2;
   return static_cast<double>(atan2(sine, cosine));
 }

@@ -542,9 +542,10 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
     if constexpr (kNearFlatFromDeterminant<Scalar> && !kExactCross)
       if (s_minus < Scalar(0x1p-20)) [[unlikely]] {
         using std::abs;
-        const std::array<double, 2> D = exact_hinge_determinant(x, exponent);
-        const Scalar sine = abs(Scalar(Scalar(D[0]) + Scalar(D[1]))) * sqrt(lane_value<Scalar>(L0, 0)) /
-                            (sqrt(lane_value<Scalar>(S, 0)) * sqrt(lane_value<Scalar>(S, 1)));
+        using std::ldexp;
+        const ScaledDeterminant D = exact_hinge_determinant(x, exponent);
+        const Scalar sine = ldexp(abs(Scalar(Scalar(Scalar(D.hi) + Scalar(D.mid)) + Scalar(D.lo))), static_cast<int>(D.e)) *
+                            sqrt(lane_value<Scalar>(L0, 0)) / (sqrt(lane_value<Scalar>(S, 0)) * sqrt(lane_value<Scalar>(S, 1)));
         t = atan2(sine, Scalar(1 - s_minus * s_minus / 2));
       }
     out.theta = sign < 0 ? Scalar(-t) : t;

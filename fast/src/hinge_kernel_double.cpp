@@ -121,8 +121,8 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
       for (int i = 0; i < 144; ++i) out.hess.data()[i] = std::ldexp(out.hess.data()[i], -2 * o.exponent);
   }
   if (!o.fast_range) [[unlikely]] wide_range_kernel(x, want_hessian, out);  // the same checks passed above
-  else if (o.short_hinge_edge || (o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6)) [[unlikely]]
-    evaluate_faithful(kernels, x, want_hessian, out);  // |theta| or pi - |theta| below ~2^-6 (never set in it)
+  else if (!faithful && (o.short_hinge_edge || (o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6))) [[unlikely]]
+    evaluate_faithful(kernels, x, want_hessian, out);  // |theta| or pi - |theta| below ~2^-6
   // Nearly flat (|theta| < 2^-40): |n - n~| is theta itself, and the double-double normals' absolute
   // error of ~2^-104 is 2^-102 / theta relative (18.7 units of 2^-53 measured at theta ~ 1e-16): theta
   // is the faithful mode's, from the exact hinge determinant (faithful_theta.hpp).

@@ -25,10 +25,7 @@ namespace {
 
 using reference::ThetaDerivatives;
 
-ThetaDerivatives<mpfr> exact(const std::array<double, 12>& x) {
-  set_mpfr_bits(256);
-  return reference::theta_derivatives<mpfr>(x);
-}
+using test::exact;
 
 // The largest of the three groups' errors (theta relative), units of 2^-53.
 double worst_group(const HingeDerivatives<double>& d, const ThetaDerivatives<mpfr>& e) {

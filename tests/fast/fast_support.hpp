@@ -7,10 +7,18 @@
 #include <random>
 #include <string>
 
+#include "hinge/reference/evaluate.hpp"
 #include "hinge/reference/mesh.hpp"
 #include "hinge/reference/scalar.hpp"
 
 namespace hinge::test {
+
+// The independent high-precision evaluation the per-hinge kernel is measured against: hinge::reference in
+// MPFR at 256 bits.
+inline reference::ThetaDerivatives<mpfr> exact(const std::array<double, 12>& x) {
+  set_mpfr_bits(256);
+  return reference::theta_derivatives<mpfr>(x);
+}
 
 // Number of random cases: `quick` by default, ten times more with HINGE_TEST_DEPTH=deep.
 inline int cases(int quick) {

@@ -29,10 +29,7 @@ namespace {
 
 using reference::ThetaDerivatives;
 
-ThetaDerivatives<mpfr> exact(const std::array<double, 12>& x) {
-  set_mpfr_bits(256);
-  return reference::theta_derivatives<mpfr>(x);
-}
+using test::exact;
 
 TEST(HingeKernel, CheckValuesOfTheConventions) {
   const auto x = test::flat_hinge();
@@ -79,7 +76,7 @@ TEST(HingeKernel, DoubleStaysWithinFourUnitsOnRandomTrianglesNearlyFlatOrNot) {
   // length), half of them made parallelograms, x3 = (x1 + x2) - x0 (rounded) plus 2^-k, k in 10 .. 60:
   // nearly flat, where eq. (6)'s central blocks cancel. The bound of DoubleMatchesMpfr256OnWellShapedHinges:
   // 4 units (a hinge edge below 1/2 of the longest on such a hinge takes the faithful mode: measured worst
-  // 4.3 before, 2.7 with it, on 3000 hinges).
+  // 4.3 before, 2.7 with it, on 3000 such hinges; the deep run of this test, 4000 hinges: 2.4).
   std::mt19937_64 rng(61);
   std::uniform_real_distribution<double> u(-1, 1);
   int checked = 0;
@@ -279,6 +276,8 @@ const std::array<double, 12> kFinding2{0, -7.7836328544510523e-73, 3.11345314178
 const std::array<double, 12> kFinding3{0, -2.4545467326488632e-103, 9.8181869305954537e-92, 0, 0, 0, 0,
                                        4.9090934652977265e-103, 0, 4.9070482653539194e-93, -2.4545467326488632e-103,
                                        -9.8059167535386641e-92};
+// A hinge edge about 0.34 of the longest edge on a hinge 2^-10 from flat.
+const std::array<double, 12> kShortishNearlyFlat{0.1, 1, 0, 0, 0, 0, 0.35, 0, 0, 0.2, -1, 0x1p-10};
 
 TEST(HingeKernel, ShortHingeEdgeAtTheRescalingThresholdIsFiniteAndAccurate) {
   const HingeDerivatives<double> d = hinge_derivatives<double>(kFinding2);
@@ -338,6 +337,43 @@ TEST(HingeKernel, HingeEdgesBelowAQuarterTakeTheFaithfulModeAndStayWithinOneUnit
     }
   }
   EXPECT_GE(taken, test::cases(60) * 4);  // k = 4, 9, 17, 30 are always short; invalid draws are rare
+}
+
+TEST(HingeKernel, NearlyFlatHingesWithAHingeEdgeBelowAHalfTakeTheFaithfulMode) {
+  // Between 1/4 and 1/2 of the longest edge, within ~2^-6 of flat (or folded): the faithful mode, bit for
+  // bit (hinge_kernel_double.cpp); the same hinge well bent stays on the plain path.
+  const HingeDerivatives<double> d = hinge_derivatives<double>(kShortishNearlyFlat), f = faithful_hinge_derivatives(kShortishNearlyFlat);
+  EXPECT_EQ(d.theta, f.theta);
+  for (int i = 0; i < 12; ++i) ASSERT_EQ(d.grad[i], f.grad[i]);
+  for (int i = 0; i < 144; ++i) ASSERT_EQ(d.hess.data()[i], f.hess.data()[i]);
+  std::array<double, 12> bent = kShortishNearlyFlat;
+  bent[11] = 0.5;  // x3 lifted: theta about 0.5
+  const HingeDerivatives<double> p = hinge_derivatives<double>(bent), q = faithful_hinge_derivatives(bent);
+  int differ = 0;
+  for (int i = 0; i < 144; ++i) differ += p.hess.data()[i] != q.hess.data()[i];
+  EXPECT_GT(differ, 0) << "the plain kernel's own rounding differs from the faithful mode in some entry";
+  const ThetaDerivatives<mpfr> e = exact(kShortishNearlyFlat);
+  EXPECT_LE(test::normwise_units(d.hess, e.hess, 0x1p-53), 1);  // the faithful mode's bound
+}
+
+// Nearly flat (theta ~ 2^-60 relative to the hinge's size) at scales 2^-400, 1, 2^400: the types of at most
+// 113 bits take theta from the exact hinge determinant, whose value (2^1140 at 2^400) lies outside double's
+// range: theta rounded to double within 2 units (the wider types' bound, docs/hard-cases.md) and finite.
+template <class Scalar>
+void check_nearly_flat_theta_at_every_scale() {
+  for (int k : {-400, 0, 400}) {
+    std::array<double, 12> x{0.3, 1, 0, 0, 0, 0, 1, 0, 0, 0.6, -1.1, 0x1p-60};
+    for (double& c : x) c = std::ldexp(c, k);
+    const double theta = to_double(hinge_derivatives<Scalar>(x).theta), want = to_double(exact(x).angle.theta);
+    EXPECT_LE(std::fabs(theta - want) / std::fabs(want) / 0x1p-53, 2) << scalar_name<Scalar>() << " at 2^" << k;
+  }
+}
+
+TEST(HingeKernel, NearlyFlatThetaKeepsItsDigitsAtEveryScaleInTheWiderTypes) {
+  check_nearly_flat_theta_at_every_scale<long double>();
+  check_nearly_flat_theta_at_every_scale<dd>();
+  check_nearly_flat_theta_at_every_scale<float128>();
+  check_nearly_flat_theta_at_every_scale<bin128>();
 }
 
 TEST(HingeKernel, Bin128ShortHingeEdgeKeepsItsDigits) {
@@ -460,6 +496,8 @@ std::vector<std::array<double, 12>> same_bits_hinges(int well_shaped) {
       if (const auto y = scaled_exactly(x, k)) hinges.push_back(*y);
   hinges.push_back(test::flat_hinge());
   hinges.push_back({0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, 1, 0});  // folded flat: theta = +pi
+  hinges.push_back({0.3, 1, 0, 0, 0, 0, 1, 0, 0, 0.6, -1.1, 0x1p-60});  // nearly flat: theta from the determinant
+  hinges.push_back(kShortishNearlyFlat);  // l0 / L about 0.35, nearly flat: the faithful mode
   return hinges;
 }
 

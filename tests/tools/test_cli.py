@@ -102,6 +102,8 @@ def test_faithful_is_within_one_unit_of_the_certified_values_in_every_category()
                 num = math.sqrt(sum((a - b) ** 2 for a, b in zip(have, certified)))
                 den = math.sqrt(sum(b * b for b in certified))
                 assert num <= 2.0**-53 * den, (w["id"], k, num / den / 2.0**-53 if den else num)
+    alone = run(["eval", "--faithful"], text)  # without --method: fast
+    assert alone[0] == 0 and alone[1] == run(["eval", "--method", "fast", "--faithful"], text)[1]
     for wrong in (["--method", "reference"], ["--method", "fast", "--scalar", "long-double"]):
         code, _, err = run(["eval", "--faithful"] + wrong, "")
         assert code == 2 and "--faithful" in err, (wrong, code, err)
