@@ -4,6 +4,11 @@
 //   hinge/faithful                         one hinge in the faithful mode (hinge/fast/faithful.hpp)
 //   hinge/isa:I                            one hinge, the kernel compiled for I = avx512, avx2, baseline
 //                                          (those the processor has; HINGE_ISA, fast/isa.hpp)
+//   capi/fast, capi/floor                  1e5 hinges through the C interface of hinge/candidate.h (the
+//                                          plugin hinge_candidate_fast.so, loaded with dlopen), one call
+//                                          per hinge into distinct slots of arrays far larger than the
+//                                          last-level cache; and the memory floor: the same reads (12
+//                                          doubles) and writes (157) with no computation
 //   mesh/{fast,reference}/n:N/threads:T    a whole n x n cloth: energy, gradient and Hessian (tan energy),
 //                                          rest state precomputed, the pattern built once (fast)
 //   pattern/n:N                            building the fast pattern (once per topology)
@@ -14,6 +19,7 @@
 // Environment: HINGE_BENCH_MAX (largest grid side, default 1001: 10^6 vertices), HINGE_BENCH_REFERENCE_MAX
 // (largest side for the reference, default 201: it builds 78 triplets per hinge).
 #include <benchmark/benchmark.h>
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <chrono>
@@ -28,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "hinge/candidate.h"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/fast/faithful.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
@@ -81,6 +88,63 @@ void hinge_isa(benchmark::State& state, fast::Isa isa) {
       benchmark::DoNotOptimize(d);
     }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+}
+
+// ---- the C interface ---------------------------------------------------------------------------------
+
+constexpr std::size_t kCapiHinges = 100000;  // 157 outputs each: 126 MB written, beyond any last-level cache
+
+struct CapiArrays {
+  std::vector<std::array<double, 12>> x;
+  std::vector<double> theta, grad, hess;
+  CapiArrays() : theta(kCapiHinges), grad(12 * kCapiHinges), hess(144 * kCapiHinges) {
+    const auto& h = bench_hinges();
+    for (std::size_t i = 0; i < kCapiHinges; ++i) x.push_back(h[i % h.size()]);
+  }
+};
+CapiArrays& capi_arrays() {
+  static CapiArrays a;
+  return a;
+}
+
+hinge_candidate_fn* capi_fast() {
+  static hinge_candidate_fn* f = [] {
+    void* library = dlopen(HINGE_CANDIDATE_FAST, RTLD_NOW | RTLD_LOCAL);
+    return library ? reinterpret_cast<hinge_candidate_fn*>(dlsym(library, "hinge_candidate")) : nullptr;
+  }();
+  return f;
+}
+
+void capi_fast_run(benchmark::State& state) {
+  hinge_candidate_fn* f = capi_fast();
+  if (!f) {
+    state.SkipWithError("cannot load " HINGE_CANDIDATE_FAST);
+    return;
+  }
+  CapiArrays& a = capi_arrays();
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < kCapiHinges; ++i) f(a.x[i].data(), &a.theta[i], &a.grad[12 * i], &a.hess[144 * i]);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kCapiHinges));
+}
+
+// The floor: each hinge's 12 doubles read and 157 written to the same slots, the values a cheap function
+// of the inputs (so that neither the reads nor the writes can be dropped).
+void capi_floor(benchmark::State& state) {
+  CapiArrays& a = capi_arrays();
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < kCapiHinges; ++i) {
+      const double* x = a.x[i].data();
+      double s = 0;
+      for (int k = 0; k < 12; ++k) s += x[k];
+      a.theta[i] = s;
+      for (int k = 0; k < 12; ++k) a.grad[12 * i + k] = s + k;
+      for (int k = 0; k < 144; ++k) a.hess[144 * i + k] = s * k;
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kCapiHinges));
 }
 
 // The same hinges in one call (hinge_derivatives over a span: with AVX-512 two at a time).
@@ -225,6 +289,10 @@ void summary(const Capture& c, const std::vector<int>& sides, double ghz_before,
     if (ghz > 0) std::printf(" (%.0f cycles)", ghz * 1e9 * hq->seconds / 1024);
     std::printf("\n");
   }
+  if (const auto cf = c.get("capi/fast"), floor = c.get("capi/floor"); cf && floor) {
+    std::printf("C interface, 1e5 hinges one call each: fast %.1f ns per hinge, memory floor %.1f ns, fast/floor %.2f\n",
+                1e9 * cf->seconds / kCapiHinges, 1e9 * floor->seconds / kCapiHinges, cf->seconds / floor->seconds);
+  }
   if (const auto best = c.get("hinge/isa:avx512")) {
     std::printf("per hinge by instruction set (one call per hinge): avx512 %.1f ns", 1e9 * best->seconds / 1024);
     for (const char* isa : {"avx2", "baseline"})
@@ -277,6 +345,8 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("hinge/fast_many", hinge_fast_many);
   benchmark::RegisterBenchmark("hinge/reference", hinge_reference);
   benchmark::RegisterBenchmark("hinge/faithful", hinge_faithful);
+  benchmark::RegisterBenchmark("capi/fast", capi_fast_run)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("capi/floor", capi_floor)->Unit(benchmark::kMillisecond);
   for (hinge::fast::Isa isa : {hinge::fast::Isa::avx512, hinge::fast::Isa::avx2, hinge::fast::Isa::baseline})
     if (hinge::fast::isa_available(isa))
       benchmark::RegisterBenchmark(("hinge/isa:" + std::string(hinge::fast::isa_name(isa))).c_str(), hinge_isa, isa);
