@@ -8,6 +8,7 @@ find_package(Boost 1.74 REQUIRED) # header-only: Boost.Multiprecision
 find_package(HingeSystemLibraries REQUIRED)
 
 find_package(nlohmann_json 3.11 REQUIRED) # hinge::io's JSON Lines
+find_package(CHOLMOD REQUIRED) # hinge::sim's sparse solver (cmake/FindCHOLMOD.cmake)
 if(HINGE_BUILD_TOOLS OR HINGE_BUILD_TESTS)
   find_package(CLI11 2.1 REQUIRED)
 endif()

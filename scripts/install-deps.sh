@@ -10,6 +10,7 @@ packages=(
   libmpfr-dev libgmp-dev        # MPFR back end (run-time precision)
   libmpfi-dev                   # interval arithmetic for the certified oracle
   libqd-dev                     # QD: double-double and quad-double scalar types (dd, qd)
+  libsuitesparse-dev            # CHOLMOD: the simulator's sparse solver (sim/)
   libgtest-dev                  # unit tests
   librapidcheck-dev             # property tests
   libbenchmark-dev              # benchmarks

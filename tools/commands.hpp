@@ -20,6 +20,7 @@ Action add_hessian(CLI::App& app);  // hinge hessian
 Action add_demo(CLI::App& app);     // hinge demo: the main job on built-in defaults
 Action add_conform(CLI::App& app);  // hinge conform: check another implementation
 Action add_study(CLI::App& app);    // hinge study: what accuracy costs in time
+Action add_simulate(CLI::App& app); // hinge simulate: run a scene
 
 constexpr int exit_done = 0, exit_invalid_input = 1, exit_usage = 2;
 

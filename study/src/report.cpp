@@ -19,8 +19,6 @@
 
 namespace hinge::study {
 
-namespace detail {
-
 std::vector<std::pair<std::string, std::string>> build_description() {
   return {{"version", HINGE_BUILD_VERSION},
           {"commit", HINGE_BUILD_COMMIT},
@@ -34,8 +32,6 @@ std::vector<std::pair<std::string, std::string>> build_description() {
           {"gmp", gmp_version},
           {"mpfi", mpfi_get_version()}};
 }
-
-}  // namespace detail
 
 namespace {
 

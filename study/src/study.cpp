@@ -90,7 +90,7 @@ Study run(const Options& o) {
   s.source = o.source;
   s.cpu = detail::cpu_name();
   s.clock_ghz = clock_ghz();
-  s.build = detail::build_description();
+  s.build = build_description();
 
   const bool builtin = o.hinges.empty();
   std::vector<std::array<double, 12>> timing;

@@ -14,9 +14,6 @@ namespace hinge::study::detail {
 MeshRow measure_mesh(methods::Method method, const ScalarType& scalar, const std::vector<int>& sizes, double budget,
                      bool quick);
 
-// The build's description for study.json: version, commit, compiler, flags, library versions.
-std::vector<std::pair<std::string, std::string>> build_description();
-
 // The processor's name (/proc/cpuinfo), or "unknown".
 std::string cpu_name();
 

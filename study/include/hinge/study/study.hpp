@@ -23,6 +23,7 @@
 #include <iosfwd>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hinge/methods/methods.hpp"
@@ -114,6 +115,10 @@ struct Study {
 // Runs the study. Throws std::invalid_argument when the methods and scalar types leave nothing to study,
 // hinge::InputError when no input hinge can be certified.
 Study run(const Options& options);
+
+// How this build was made, for study.json and the simulator's summary.json: version, commit, compiler,
+// build type, flags, library versions.
+std::vector<std::pair<std::string, std::string>> build_description();
 
 // study.json (docs/contract.md), study.md (the same tables in Markdown), the summary table printed.
 void write_json(std::ostream& out, const Study& s);

@@ -1,0 +1,63 @@
+// hinge/sim/effect.hpp: one effect of a scene (gravity, stretching, bending, damping, pins, sphere, load),
+// built only when the scene names it (make_effects). Each adds its part of the potential Newton minimizes
+// (the total potential for a static solve; for a backward Euler step the incremental potential, whose
+// inertial part the integrator adds) at a state x (3n coordinates, 3 v + c) into an Evaluation.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "hinge/reference/mesh.hpp"
+#include "hinge/sim/scene.hpp"
+#include "hinge/sim/system.hpp"
+
+namespace hinge::sim {
+
+// What one evaluation of the potential adds to (request: reference::want_energy | want_gradient |
+// want_hessian).
+struct Evaluation {
+  unsigned request = 7;
+  double energy = 0;
+  Eigen::VectorXd gradient;    // 3n
+  std::vector<double> hessian;  // the Sparsity's values
+};
+
+// What the effects share: the scene, its topology and Hessian structure, the lumped masses (per
+// coordinate), the time step (0 for a static solve) and the threads they may use.
+struct Context {
+  const Scene* scene = nullptr;
+  const Topology* topology = nullptr;
+  const Sparsity* sparsity = nullptr;
+  Eigen::VectorXd mass;  // 3n: each vertex's lumped mass, three times
+  double dt = 0;
+  int threads = 1;
+};
+
+class Effect {
+ public:
+  virtual ~Effect() = default;
+  virtual std::string_view name() const = 0;
+  // Adds this effect's part of the potential at x (throws hinge::DomainError where it is infinite, as the
+  // tan energy of a hinge folded flat).
+  virtual void add(const Eigen::VectorXd& x, Evaluation& out) = 0;
+  // Whether the effect has a potential energy of its own for summary.json, and its value at x.
+  virtual bool has_energy() const { return false; }
+  virtual double energy(const Eigen::VectorXd& /*x*/) { return 0; }
+  // Called before each time step with its starting state (x, v).
+  virtual void begin_step(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*v*/) {}
+  // The largest fraction of the step dx from x that keeps the state admissible (the sphere: no vertex
+  // enters), in (0, 1].
+  virtual double max_step(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*dx*/) const { return 1; }
+  // Checks the initial state x; throws hinge::InputError naming the scene's key.
+  virtual void check_initial(const Eigen::VectorXd& /*x*/) const {}
+};
+
+// The effects the scene names, in the contract's order (gravity, stretching, bending, damping, pins,
+// sphere, load). Throws hinge::InputError for a rest shape an effect cannot take (degenerate triangles,
+// a rest hinge folded flat under the tan energy), naming the scene and the element.
+std::vector<std::unique_ptr<Effect>> make_effects(const Context& context);
+
+}  // namespace hinge::sim

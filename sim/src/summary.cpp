@@ -1,0 +1,31 @@
+// summary.json (hinge/sim/summary.hpp).
+#include "hinge/sim/summary.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace hinge::sim {
+
+std::string summary_json(const Summary& s, const std::vector<std::pair<std::string, std::string>>& build) {
+  using json = nlohmann::ordered_json;  // numbers as the shortest decimal that reads back exactly
+  json j;
+  j["scene"] = s.scene;
+  j["status"] = s.ok ? "ok" : "failed";
+  if (!s.ok) j["reason"] = s.reason;
+  j["effects"] = s.effects;
+  j["vertices"] = s.vertices;
+  j["steps"] = s.steps;
+  j["newton_iterations"] = s.newton_iterations;
+  json effects = json::object();
+  for (const auto& [name, t] : s.time_effects) effects[name] = t;
+  j["time_s"] = {{"total", s.time_total}, {"linear_solve", s.time_linear_solve}, {"effects", effects}};
+  json energy = json::object();
+  for (const auto& [name, e] : s.energy) energy[name] = e;
+  j["energy"] = energy;
+  j["bending_share"] = s.bending_share;
+  json b = json::object();
+  for (const auto& [k, v] : build) b[k] = v;
+  j["build"] = b;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace hinge::sim

@@ -1,0 +1,94 @@
+// Scene files are read strictly: a key the format does not know, anywhere, or a bad value is an error
+// naming the file and the key (the contract's "hinge simulate and scene files").
+#include <gtest/gtest.h>
+
+#include "hinge/reference/errors.hpp"
+#include "sim_support.hpp"
+
+namespace hinge::sim {
+namespace {
+
+const std::string kValid = R"({"scene": 1, "name": "t",
+ "mesh": {"grid": {"vertices": [3, 2], "size": [2, 1], "center": [0, 0, 1], "plane": "xz"}},
+ "material": {"density": 1000, "young": 1e6, "poisson": 0.25, "thickness": 0.01},
+ "solve": {"mode": "dynamic", "dt": 0.01, "steps": 3},
+ "effects": {"gravity": {"g": [0, 0, -9.81]}, "pins": {"vertices": [0, 2]}},
+ "output": {"every": 1}})";
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+// The message of the InputError that reading `json` raises ("" if none).
+std::string error_of(const std::string& json) {
+  const auto path = test::write_scene("scene", json);
+  try {
+    read_scene(path.string());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Scene, AValidSceneReadsWithExactlyTheEffectsItNames) {
+  const Scene s = read_scene(test::write_scene("valid", kValid).string());
+  EXPECT_TRUE(s.gravity && s.pins);
+  EXPECT_FALSE(s.stretching || s.bending || s.damping || s.sphere || s.load);
+  EXPECT_EQ(s.solve.mode, Mode::dynamic);
+  EXPECT_EQ(s.solve.hessian, HessianTreatment::projected);  // the contract's defaults
+  EXPECT_EQ(s.solve.linear_solver, LinearSolver::cholmod);
+  EXPECT_EQ(s.solve.max_newton, 100);
+  EXPECT_EQ(s.solve.newton_tolerance, 1e-9);
+}
+
+TEST(Scene, GridFollowsTheContract) {
+  const Scene s = read_scene(test::write_scene("grid", kValid).string());
+  ASSERT_EQ(s.mesh.vertices.size(), 6u);
+  // vertex i + nx j at center + (i/(nx-1) - 1/2) lx a + (j/(ny-1) - 1/2) ly b, plane xz: a = x, b = z
+  EXPECT_EQ(s.mesh.vertices[0], (Vec3{-1, 0, 0.5}));
+  EXPECT_EQ(s.mesh.vertices[4], (Vec3{0, 0, 1.5}));
+  ASSERT_EQ(s.mesh.faces.size(), 4u);
+  EXPECT_EQ(s.mesh.faces[0], (std::array<Index, 3>{0, 1, 4}));  // (p, q, r), p = (0,0), r = (1,1)
+  EXPECT_EQ(s.mesh.faces[1], (std::array<Index, 3>{0, 4, 3}));  // (p, r, s)
+}
+
+TEST(Scene, AnUnknownKeyAnywhereIsAnErrorNamingIt) {
+  EXPECT_NE(error_of(replaced(kValid, "\"gravity\"", "\"gravty\"")).find("effects.gravty: unknown key"), std::string::npos);
+  EXPECT_NE(error_of(replaced(kValid, "\"dt\"", "\"dtt\"")).find("solve.dtt"), std::string::npos);
+  EXPECT_NE(error_of(replaced(kValid, "\"g\"", "\"G\"")).find("effects.gravity.G"), std::string::npos);
+  EXPECT_NE(error_of(replaced(kValid, "\"plane\"", "\"plane\": \"xz\", \"sise\"")).find("mesh.grid.sise: unknown key"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced(kValid, "\"every\"", "\"evry\"")).find("output.evry"), std::string::npos);
+  EXPECT_NE(error_of(replaced(kValid, "\"name\"", "\"nam\"")).find("nam: unknown key (expected one of scene, name,"), std::string::npos);
+  EXPECT_NE(error_of(replaced(kValid, "\"name\": \"t\",", "\"name\": \"t\", \"extra\": 1,")).find("extra: unknown key"),
+            std::string::npos);
+}
+
+TEST(Scene, BadValuesAreErrorsNamingTheKey) {
+  const auto has = [](const std::string& json, const std::string& what) {
+    const std::string e = error_of(json);
+    EXPECT_NE(e.find("scene.json"), std::string::npos) << e;  // the file
+    EXPECT_NE(e.find(what), std::string::npos) << e;
+  };
+  has(replaced(kValid, "\"density\": 1000", "\"density\": -1"), "material.density");
+  has(replaced(kValid, "\"poisson\": 0.25", "\"poisson\": 0.5"), "material.poisson");
+  has(replaced(kValid, "[0, 2]", "[0, 6]"), "effects.pins.vertices[1]: vertex 6 out of range");
+  has(replaced(kValid, "[0, 2]", "[0, 0]"), "listed twice");
+  has(replaced(kValid, "\"dynamic\"", "\"static\""), "solve.dt: not allowed");
+  has(replaced(kValid, "\"dynamic\"", "\"dynamc\""), "solve.mode: unknown value 'dynamc'");
+  has(replaced(kValid, "\"steps\": 3", "\"steps\": 2.5"), "solve.steps: expected an integer");
+  has(replaced(kValid, "\"pins\"", "\"bending\": {\"energy\": \"tann\"}, \"pins\""), "effects.bending.energy");
+  has(replaced(kValid, "\"pins\"", "\"bending\": {\"energy\": \"tan\", \"method\": \"fastest\"}, \"pins\""),
+      "effects.bending.method");
+  has(replaced(kValid, "\"pins\"", "\"damping\": {\"model\": \"viscous\", \"bending\": 0.1}, \"pins\""),
+      "effects.damping.bending: needs effects.bending");
+  has(replaced(kValid, "\"scene\": 1", "\"scene\": 2"), "unsupported format version 2");
+  has(replaced(kValid, "[3, 2]", "[1, 2]"), "mesh.grid.vertices");
+  has(replaced(kValid, "{\"grid\"", "{\"obj\": \"missing.obj\", \"grid\""), "exactly one of");
+  has(replaced(kValid, "\"t\",", "\"t\""), "not valid JSON");
+}
+
+}  // namespace
+}  // namespace hinge::sim
