@@ -19,6 +19,7 @@ E5 (clarification) the tilde edge normals in eq. (5) must be outward, m~_i = nt 
 E6 (clarification) the blocks of eq. (6) are d^2 theta / dx_i dx_j with rows = components of x_i;
    the other reading is wrong.
 E7 Section 8 (edge collapse): see check_edge_collapse.py (proofs.edge-collapse).
+E8 Section 5, eq. (11) (k = D/2 against the plate): see check_plate_limit.py (proofs.plate-limit).
 --falsify printed: claim the printed forms (E1, E2, E3, E4) are right
 """
 import random

@@ -33,7 +33,8 @@ class BendingEffect final : public Effect {
         assembler_(topology_), rest_(c.scene->rest), mesh_(c.scene->mesh), file_(c.scene->file) {
     const Material& m = c.scene->material;
     parameters_.model = b.energy;
-    parameters_.k = b.k ? *b.k : reference::bending_stiffness(m.young, m.poisson, m.thickness);  // eq. (11)
+    // eq. (11); three times a plate's stiffness in cylindrical bending: proofs/errata.md E8
+    parameters_.k = b.k ? *b.k : reference::bending_stiffness(m.young, m.poisson, m.thickness);
     if (damping && damping->bending > 0) {  // section 5: the viscoelastic model
       parameters_.model = Model::viscoelastic;
       parameters_.k_d_over_dt = damping->bending * parameters_.k / c.dt;
@@ -43,6 +44,17 @@ class BendingEffect final : public Effect {
     } catch (const std::exception& e) {
       throw InputError(file_ + ": effects.bending: the rest shape: " + e.what());
     }
+    // The paper's eq. (10), |theta_bar| < pi, enforced at initialization as section 5 says: at theta_bar = pi
+    // (two rest triangles overlapping) every energy but tan's jumps across the branch cut, so Newton could
+    // not descend from the rest state itself.
+    for (std::size_t i = 0; i < coefficients_.size(); ++i)
+      if (!(std::abs(coefficients_[i].theta_bar) < M_PI)) {
+        const auto& x = topology_.hinges[i].x;
+        throw InputError(file_ + ": effects.bending: the rest shape: the hinge on the edge of vertices " +
+                         std::to_string(x[1]) + " and " + std::to_string(x[2]) +
+                         " (0-based) is folded flat (theta_bar = pi: its two triangles overlap); eq. (10) needs "
+                         "|theta_bar| < pi");
+      }
     if (treatment_ != HessianTreatment::exact) {
       hinge_slots_.reserve(topology_.hinges.size());
       for (const auto& h : topology_.hinges) hinge_slots_.push_back(sparsity_.element_slots(h.x));

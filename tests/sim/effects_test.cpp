@@ -187,6 +187,23 @@ TEST(Effects, ACurvedRestShapeWithObtuseAnglesIsAnEquilibrium) {
   }
 }
 
+TEST(Effects, ARestHingeFoldedFlatIsAnInputErrorNamingItsEdge) {
+  // One rest triangle turned over onto its neighbour (theta_bar = pi): eq. (10) fails there, for every energy.
+  for (auto energy : {reference::Model::shells, reference::Model::tan}) {
+    Scene s = test::cloth(3, 3, 0.2, 0.2);
+    s.rest.vertices[3] = {-0.02, -0.06, 0};  // vertex 3 across the diagonal 0-4: face (0, 4, 3) turned over
+    s.bending = Bending{energy, 1e-3, "fast", "double"};
+    try {
+      test::Effects fx(s);
+      ADD_FAILURE() << "no error for " << reference::model_name(energy);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("test-scene.json: effects.bending: the rest shape: "), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("is folded flat (theta_bar = pi"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Effects, ProjectedBendingHessianIsPositiveSemidefinite) {
   Scene s = test::cloth(4, 3, 0.3, 0.2);
   s.bending = Bending{reference::Model::tan, 1e-3, "fast", "double"};

@@ -110,9 +110,9 @@ def test_the_shipped_scenes_run():
     for name in sorted(os.listdir(SCENES)):
         if name.endswith(".json"):
             s = json.load(open(os.path.join(SCENES, name)))
-            for key in ("obj",):  # meshes named relative to the scenes folder
-                if key in s["mesh"]:
-                    s["mesh"][key] = os.path.join(SCENES, s["mesh"][key])
+            for holder in (s["mesh"], s["mesh"].get("rest", {})):  # meshes named relative to the scenes folder
+                if "obj" in holder:
+                    holder["obj"] = os.path.join(SCENES, holder["obj"])
             if s["solve"]["mode"] == "dynamic":
                 s["solve"]["steps"] = 1  # one step of each dynamic scene; static scenes in full
             p, out = simulate(s)
