@@ -4,7 +4,7 @@ damped to equilibrium; five materials from soft cloth to stiff shell, each at 36
 
   beams.py meshes              writes meshes/beam-{366,787,1372}.obj and beam-{1..5}.json (787 vertices):
                                what scenes/ ships (deterministic: the same bytes every run)
-  beams.py table HINGE [--out F.json]
+  beams.py table HINGE [--out F.json] [--rows F.json]
                                runs the 5 x 3 scenes with bending by fast, reference and autodiff and prints
                                Table 1's figure (bending's share of the time) and the Newton iterations
 
@@ -134,17 +134,32 @@ def cmd_table(hinge, out_json):
                                                     100 * row["bending_share"], z), file=sys.stderr)
     if out_json:
         json.dump(rows, open(out_json, "w"), indent=1)
-    print("| vertices | beam | Newton its | time (fast) | bending share: fast | reference | autodiff | lowest z "
-          "| motion in the last 0.5 s |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print_table(rows)
+
+
+def interior_edges(F):
+    count = {}
+    for f in F:
+        for s in range(3):
+            e = tuple(sorted((int(f[s]), int(f[(s + 1) % 3]))))
+            count[e] = count.get(e, 0) + 1
+    return sum(1 for c in count.values() if c == 2)
+
+
+def print_table(rows):
+    print("| vertices | beam | Newton its | time (fast) | ms per iteration | bending us per interior edge per "
+          "iteration | bending share: fast | reference | autodiff | lowest z | motion in the last 0.5 s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for n in RESOLUTIONS:
+        edges = interior_edges(mesh(n)[1])
         for beam in range(1, 6):
             r = {x["method"]: x for x in rows if x["vertices"] == n and x["beam"] == beam}
             f = r["fast"]
-            print("| %d | %d (%g mm) | %d | %.2f s | %.1f%% | %.1f%% | %.1f%% | %.4f m | %.1e m |" % (
-                n, beam, THICKNESS_MM[beam - 1], f["newton"], f["total_s"], 100 * f["bending_share"],
-                100 * r["reference"]["bending_share"], 100 * r["autodiff"]["bending_share"], f["lowest_z"],
-                f["last_motion"]))
+            bending_us = 1e6 * f["bending_share"] * f["total_s"] / f["newton"] / edges
+            print("| %d | %d (%g mm) | %d | %.2f s | %.2f | %.2f | %.1f%% | %.1f%% | %.1f%% | %.4f m | %.1e m |" % (
+                n, beam, THICKNESS_MM[beam - 1], f["newton"], f["total_s"], 1e3 * f["total_s"] / f["newton"],
+                bending_us, 100 * f["bending_share"], 100 * r["reference"]["bending_share"],
+                100 * r["autodiff"]["bending_share"], f["lowest_z"], f["last_motion"]))
     for m in METHODS:
         shares = [100 * x["bending_share"] for x in rows if x["method"] == m]
         print("%s: bending share %.1f-%.1f%% over the 15 runs" % (m, min(shares), max(shares)))
@@ -156,9 +171,15 @@ def main():
     sub.add_parser("meshes")
     t = sub.add_parser("table")
     t.add_argument("hinge")
-    t.add_argument("--out", default=None)
+    t.add_argument("--out", default=None, help="write the runs' figures (JSON) here")
+    t.add_argument("--rows", default=None, help="print the table of an earlier --out instead of running")
     a = p.parse_args()
-    cmd_meshes() if a.cmd == "meshes" else cmd_table(a.hinge, a.out)
+    if a.cmd == "meshes":
+        cmd_meshes()
+    elif a.rows:
+        print_table(json.load(open(a.rows)))
+    else:
+        cmd_table(a.hinge, a.out)
 
 
 if __name__ == "__main__":
