@@ -86,10 +86,16 @@ HINGE_FAST_INLINE DoubleDoubleOf<L> fast_two_sum(L a, L b) {
   const L s = a + b;
   return {s, b - (s - a)};
 }
+// a b - p, exactly, for p = a b rounded: a fused multiply-add (lanes.hpp gives the baseline's lanes
+// Dekker's product instead, the same bits).
+template <class L>
+HINGE_FAST_INLINE L product_error(L a, L b, L p) {
+  return fused(a, b, -p);
+}
 template <class L>
 HINGE_FAST_INLINE DoubleDoubleOf<L> two_prod(L a, L b) {
   const L p = a * b;
-  return {p, fused(a, b, -p)};
+  return {p, product_error(a, b, p)};
 }
 
 template <class L>

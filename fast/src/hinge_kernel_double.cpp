@@ -1,8 +1,10 @@
 // The double per-hinge kernel (hinge/fast/hinge_kernel.hpp, isa.hpp) across eight lanes (hinge_kernel_lanes.hpp),
 // compiled three times: for x86-64-v4 (AVX-512: one register per eight lanes), x86-64-v3 (AVX2 and a
-// hardware fused multiply-add: two registers) and the baseline x86-64 (which calls libm's fma). The
-// choice is made once, at the first call; the results are the same bits either way (lane-by-lane IEEE
-// operations, -ffp-contract=off, and fma is exact on all three). The vector work makes no call; its
+// hardware fused multiply-add: two registers) and the baseline x86-64 (no FMA: the fused multiply-add
+// emulated exactly in SSE2, lanes.hpp's fused_without_fma, and exact products by Dekker's). The choice is
+// made once, at the first call; the results are the same bits either way (lane-by-lane IEEE operations,
+// -ffp-contract=off, and the fused multiply-add correctly rounded on all three). The vector work makes no
+// call (no libm fma either); its
 // outcome is completed here (exact decisions, atan2, errors), in code common to the three. Many hinges
 // in one call go two at a time where the processor has AVX-512 (pair_v4), each completed as if alone.
 #include <algorithm>

@@ -118,7 +118,7 @@ HINGE_FAST_INLINE L largest_of_three(const L& a) {
 template <class L>
 HINGE_FAST_INLINE L round_product(const DoubleDoubleOf<L>& a, const DoubleDoubleOf<L>& b) {
   const L p = a.hi * b.hi;
-  return p + (fused(a.hi, b.hi, -p) + fused(a.hi, b.lo, a.lo * b.hi));
+  return p + (product_error(a.hi, b.hi, p) + fused(a.hi, b.lo, a.lo * b.hi));
 }
 
 // The gradient from g[c] (lanes 0, 1, 2, 4: component c of the gradient at x0, x1, x2, x3) into

@@ -4,7 +4,8 @@
 //
 //   Zmm8   one 512-bit register (AVX-512: x86-64-v4)
 //   Ymm8   two 256-bit registers (AVX2 and FMA: x86-64-v3)
-//   Sse8   two 256-bit vectors of the baseline x86-64 (the compiler makes pairs of SSE registers of them)
+//   Sse8   two 256-bit vectors of the baseline x86-64 (the compiler makes pairs of SSE registers of them;
+//          its fused multiply-add emulated exactly: fused_without_fma)
 //
 // All offer the same operations, lane by lane IEEE arithmetic (+ - * /, fused multiply-add, square root)
 // and shuffles whose pattern is the same in both halves, so that a kernel written once computes the same
@@ -12,6 +13,8 @@
 // of the function it is inlined into (dispatch.hpp); Zmm8 and Ymm8 live only in functions compiled for
 // AVX-512 and for AVX2 respectively.
 #pragma once
+
+#include <emmintrin.h>
 
 #include <cmath>
 #include <cstring>
@@ -30,6 +33,8 @@ typedef double Double8 __attribute__((vector_size(64)));
 typedef double Double4 __attribute__((vector_size(32)));
 typedef long long Index8 __attribute__((vector_size(64)));
 typedef long long Index4 __attribute__((vector_size(32)));
+typedef double Double2 __attribute__((vector_size(16)));  // one SSE2 register, as __m128d
+typedef long long Index2 __attribute__((vector_size(16)));
 
 struct Zmm8 {
   Double8 v;
@@ -80,11 +85,62 @@ struct Halves8 {
 using Ymm8 = Halves8<true>;
 using Sse8 = Halves8<false>;
 
+// a b + c rounded once, lane by lane, with neither a fused multiply-add instruction nor a library call (the
+// baseline x86-64 has no FMA, and libm's fma is a call that spills every vector register): Dekker's exact
+// product p + e = a b, with Veltkamp's split; then Boldo and Melquiond's emulation (IEEE Trans. Computers
+// 57(4), 2008, "Emulation of FMA and correctly rounded sums: proved algorithms using rounding to odd"):
+// th + tl = c + p exactly, v = tl + e rounded to odd (rounded to nearest, then moved one unit towards the
+// exact sum where that is inexact and the last bit even), the result th + v rounded to nearest. The same
+// bits as a fused multiply-add wherever the split does not overflow (|a|, |b| < 2^995) and the product's
+// error does not underflow (the kernels' rescaled stencils stay far inside both). A zero product takes the
+// plain sum c + p, which carries the fused multiply-add's sign of zero.
+// e with p + e = a b exactly for p = a b rounded (Dekker's product with Veltkamp's split), under the same
+// conditions: what a fused multiply-add gives for a b - p, at a third of fused_without_fma's cost.
+HINGE_FAST_INLINE Double2 product_error_without_fma(Double2 a, Double2 b, Double2 p) {
+  const Double2 veltkamp = Double2{} + 134217729.0;  // 2^27 + 1
+  const Double2 ta = a * veltkamp, ah = ta - (ta - a), al = a - ah;
+  const Double2 tb = b * veltkamp, bh = tb - (tb - b), bl = b - bh;
+  return (((ah * bh - p) + ah * bl) + al * bh) + al * bl;
+}
+HINGE_FAST_INLINE Double2 fused_without_fma(Double2 a, Double2 b, Double2 c) {
+  const Double2 p = a * b;
+  const Double2 e = product_error_without_fma(a, b, p);  // p + e = a b exactly
+  const Double2 th = c + p, zc = th - c;
+  const Double2 tl = (c - (th - zc)) + (p - zc);  // th + tl = c + p exactly (Knuth)
+  const Double2 s = tl + e, ze = s - tl;
+  const Double2 r = (tl - (s - ze)) + (e - ze);  // s + r = tl + e exactly
+  // The masks by SSE2's double compares (as vector comparisons GCC would compare lane by lane in scalars).
+  const Double2 zero{};
+  Index2 bits = reinterpret_cast<Index2>(s);
+  const Index2 to_odd = (1 - (bits & 1)) & reinterpret_cast<Index2>(_mm_cmpneq_pd(r, zero));  // inexact, even: 1
+  const Index2 away = reinterpret_cast<Index2>(_mm_xor_pd(_mm_cmplt_pd(s, zero), _mm_cmplt_pd(r, zero)));
+  bits += (to_odd ^ away) - away;  // one unit up, or down where r points towards zero: s + r rounded to odd
+  const Double2 zero_product = _mm_cmpeq_pd(p, zero);
+  return _mm_or_pd(_mm_and_pd(zero_product, c + p), _mm_andnot_pd(zero_product, th + reinterpret_cast<Double2>(bits)));
+}
+// The same on four lanes, as two SSE2 registers.
+template <class Op>
+HINGE_FAST_INLINE Double4 on_halves(Double4 a, Double4 b, Double4 c, Op op) {
+  Double2 a2[2], b2[2], c2[2];
+  std::memcpy(a2, &a, sizeof a), std::memcpy(b2, &b, sizeof b), std::memcpy(c2, &c, sizeof c);
+  const Double2 r2[2] = {op(a2[0], b2[0], c2[0]), op(a2[1], b2[1], c2[1])};
+  Double4 r;
+  std::memcpy(&r, r2, sizeof r);
+  return r;
+}
+HINGE_FAST_INLINE Double4 fused_without_fma(Double4 a, Double4 b, Double4 c) {
+  return on_halves(a, b, c, [](Double2 x, Double2 y, Double2 z) HINGE_FAST_LAMBDA_INLINE { return fused_without_fma(x, y, z); });
+}
+HINGE_FAST_INLINE Double4 product_error_without_fma(Double4 a, Double4 b, Double4 p) {
+  return on_halves(a, b, p, [](Double2 x, Double2 y, Double2 z) HINGE_FAST_LAMBDA_INLINE {
+    return product_error_without_fma(x, y, z);
+  });
+}
+
 // Lane by lane a b + c (one rounding) and sqrt(a): for Zmm8 and Ymm8 the AVX-512 and AVX instructions, as
 // inline assembly (GCC offers no vector fused multiply-add that an inlined helper may use whatever its
 // caller's target: the intrinsics refuse to inline into functions not compiled for them, and a
-// lane-by-lane loop is vectorized or not depending on its surroundings); for Sse8 lane by lane (libm's
-// fma on the baseline).
+// lane-by-lane loop is vectorized or not depending on its surroundings); for Sse8 fused_without_fma.
 HINGE_FAST_INLINE Zmm8 fused(Zmm8 a, Zmm8 b, Zmm8 c) {
   asm("vfmadd231pd %2, %1, %0" : "+v"(c.v) : "v"(a.v), "v"(b.v));
   return c;
@@ -98,9 +154,15 @@ template <bool kAvx2>
 HINGE_FAST_INLINE Halves8<kAvx2> fused(Halves8<kAvx2> a, Halves8<kAvx2> b, Halves8<kAvx2> c) {
   for (int k = 0; k < 2; ++k) {
     if constexpr (kAvx2) asm("vfmadd231pd %2, %1, %0" : "+x"(c.h[k]) : "x"(a.h[k]), "x"(b.h[k]));
-    else for (int i = 0; i < 4; ++i) c.h[k][i] = __builtin_fma(a.h[k][i], b.h[k][i], c.h[k][i]);
+    else c.h[k] = fused_without_fma(a.h[k], b.h[k], c.h[k]);
   }
   return c;
+}
+// a b - p exactly for p = a b rounded (exact.hpp's product_error): on the baseline by Dekker's product.
+template <bool kAvx2>
+HINGE_FAST_INLINE Halves8<kAvx2> product_error(Halves8<kAvx2> a, Halves8<kAvx2> b, Halves8<kAvx2> p) {
+  if constexpr (kAvx2) return fused(a, b, -p);
+  else return {{product_error_without_fma(a.h[0], b.h[0], p.h[0]), product_error_without_fma(a.h[1], b.h[1], p.h[1])}};
 }
 template <bool kAvx2>
 HINGE_FAST_INLINE Halves8<kAvx2> root(Halves8<kAvx2> a) {

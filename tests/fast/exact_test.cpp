@@ -1,14 +1,18 @@
 // The sign filter of fast/src/exact.hpp: whenever it decides, its answer is the sign of the computed
 // determinant (which the mesh path uses on the flat side without running the filter, assemble.hpp), and
-// that determinant is hinge_determinant's, bit for bit.
+// that determinant is hinge_determinant's, bit for bit. The baseline's fused multiply-add without an FMA
+// (fast/src/lanes.hpp, fused_without_fma) is the fused multiply-add, bit for bit.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 #include "fast_support.hpp"
 #include "src/exact.hpp"
+#include "src/lanes.hpp"
 
 namespace hinge::fast {
 namespace {
@@ -55,6 +59,57 @@ TEST(Exact, WheneverTheFilterDecidesItGivesTheSignOfTheComputedDeterminant) {
   EXPECT_GT(undecided, 0);
   EXPECT_GT(zero, 0);
   EXPECT_GT(nonzero, 0);
+}
+
+TEST(Exact, FusedWithoutFmaIsTheFusedMultiplyAddBitForBit) {
+  // Against std::fma (correctly rounded: the FMA instruction or glibc's). Operands over the kernels' range
+  // and beyond (|a|, |b| up to 2^400; products down to 2^-800, so the product's error stays normal), every
+  // sign, and the cases that decide the rounding: c cancelling the product to its last bits, c far below
+  // the product, c far above, a sum that rounding to nearest twice would get wrong (case 5: without the
+  // rounding to odd every one of them fails), products that are ties, zeros of both signs.
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> unit(1, 2);
+  std::uniform_int_distribution<int> exponent(-400, 400), sign(0, 1), shape(0, 6);
+  auto random = [&](int e) { return std::ldexp(unit(rng), e) * (sign(rng) ? -1 : 1); };
+  int compared = 0, mismatches = 0;
+  for (int round = 0; round < 200000; ++round) {
+    Double4 a, b, c;
+    for (int i = 0; i < 4; ++i) {
+      a[i] = random(exponent(rng));
+      b[i] = random(exponent(rng));
+      const double p = a[i] * b[i];
+      switch (shape(rng)) {
+        case 0: c[i] = random(exponent(rng)); break;                                        // anything
+        case 1: c[i] = -p; break;                                                           // cancels to e
+        case 2: c[i] = -p + std::ldexp(p, -52) * (sign(rng) ? 1 : -1); break;               // nearly
+        case 3: c[i] = std::ldexp(p, -60 - static_cast<int>(rng() % 60)) * (sign(rng) ? 1 : -1); break;  // tail
+        case 4: c[i] = std::ldexp(p, 40 + static_cast<int>(rng() % 30)); break;             // far above
+        case 5: {  // the double rounding that rounding to odd prevents: c + p a tie, the product's error
+                   // -2^-(53+2j) just below it (a b = 2^-53 (1 - 2^-2j) 2^t, c = (1 + 2^-52) 2^t, odd)
+          const int t = exponent(rng) / 2, j = 27 + static_cast<int>(rng() % 26), u = exponent(rng) / 4;
+          const double s = sign(rng) ? 1 : -1;
+          a[i] = s * std::ldexp(1 + std::ldexp(1, -j), u);
+          b[i] = std::ldexp(1 - std::ldexp(1, -j), t - 53 - u);
+          c[i] = s * std::ldexp(1 + std::ldexp(1, -52), t);
+          break;
+        }
+        default:                                                                            // ties, zeros
+          a[i] = 1 + std::ldexp(static_cast<double>(rng() % 1024), -10);
+          b[i] = 1 + std::ldexp(1, -43);
+          c[i] = (rng() % 3 == 0) ? -0.0 : (rng() % 2 ? 0.0 : -a[i]);
+          if (rng() % 4 == 0) a[i] = sign(rng) ? 0.0 : -0.0;
+      }
+    }
+    const Double4 got = fused_without_fma(a, b, c);
+    for (int i = 0; i < 4; ++i) {
+      ++compared;
+      const double want = std::fma(a[i], b[i], c[i]);
+      if (std::bit_cast<std::uint64_t>(got[i]) != std::bit_cast<std::uint64_t>(want) && ++mismatches <= 5)
+        ADD_FAILURE() << std::hexfloat << "a " << a[i] << " b " << b[i] << " c " << c[i] << ": " << got[i]
+                      << " against " << want;
+    }
+  }
+  EXPECT_EQ(mismatches, 0) << "of " << compared;
 }
 
 }  // namespace
