@@ -14,19 +14,13 @@
 
 namespace hinge::plugins {
 
-// `evaluate(x)` returns the hinge's derivatives; `theta_of(d)` picks theta from them (the reference
-// and the fast kernel name it differently); d.grad[i] and d.hess(i, j) are read as doubles.
-template <class Evaluate, class ThetaOf>
-int call_candidate(const double x[12], double* theta, double grad[12], double hess[144], Evaluate evaluate,
-                   ThetaOf theta_of) {
+// `write(in)` evaluates the hinge `in` and writes the caller's outputs itself.
+template <class Write>
+int call_candidate_into(const double x[12], Write write) {
   try {
     std::array<double, 12> in;
     for (int i = 0; i < 12; ++i) in[i] = x[i];
-    const auto d = evaluate(in);
-    *theta = theta_of(d);
-    for (int i = 0; i < 12; ++i) grad[i] = d.grad[i];
-    for (int i = 0; i < 12; ++i)
-      for (int j = 0; j < 12; ++j) hess[12 * i + j] = d.hess(i, j);  // row-major
+    write(in);
     return 0;
   } catch (const std::invalid_argument& e) {
     static std::atomic<bool> said{false};  // once per process, not once per hinge
@@ -35,6 +29,20 @@ int call_candidate(const double x[12], double* theta, double grad[12], double he
   } catch (const std::exception&) {
     return 1;
   }
+}
+
+// `evaluate(x)` returns the hinge's derivatives; `theta_of(d)` picks theta from them (the reference
+// and the fast kernel name it differently); d.grad[i] and d.hess(i, j) are read as doubles and copied out.
+template <class Evaluate, class ThetaOf>
+int call_candidate(const double x[12], double* theta, double grad[12], double hess[144], Evaluate evaluate,
+                   ThetaOf theta_of) {
+  return call_candidate_into(x, [&](const std::array<double, 12>& in) {
+    const auto d = evaluate(in);
+    *theta = theta_of(d);
+    for (int i = 0; i < 12; ++i) grad[i] = d.grad[i];
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j) hess[12 * i + j] = d.hess(i, j);  // row-major
+  });
 }
 
 }  // namespace hinge::plugins

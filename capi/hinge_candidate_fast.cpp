@@ -6,7 +6,8 @@
 #include "hinge/fast/hinge_kernel.hpp"
 
 extern "C" int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
-  return hinge::plugins::call_candidate(
-      x, theta, grad, hess, [](const std::array<double, 12>& in) { return hinge::fast::hinge_derivatives<double>(in, true); },
-      [](const auto& d) { return d.theta; });
+  // Straight into the caller's arrays (hinge::fast::hinge_derivatives_into): no intermediate matrix.
+  return hinge::plugins::call_candidate_into(x, [&](const std::array<double, 12>& in) {
+    hinge::fast::hinge_derivatives_into(in, *theta, grad, hess);
+  });
 }

@@ -23,55 +23,57 @@
 namespace hinge::fast::detail {
 namespace {
 
-using Kernel = void (*)(const std::array<double, 12>* const*, bool, HingeDerivatives<double>* const*, LanesOutcome*);
+using Kernel = void (*)(const std::array<double, 12>* const*, bool, const Destination*, LanesOutcome*);
 
-HINGE_FAST_TARGET_V4 void kernel_v4(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+Destination destination(HingeDerivatives<double>& d) { return {d.grad.data(), d.hess.data()}; }
+
+HINGE_FAST_TARGET_V4 void kernel_v4(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                     LanesOutcome* o) {
   lanes_kernel<Zmm8, false>(x, h, out, o);
 }
-HINGE_FAST_TARGET_V4 void rescaled_v4(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+HINGE_FAST_TARGET_V4 void rescaled_v4(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                       LanesOutcome* o) {
   lanes_kernel<Zmm8, true>(x, h, out, o);
 }
-HINGE_FAST_TARGET_V4 void pair_v4(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+HINGE_FAST_TARGET_V4 void pair_v4(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                   LanesOutcome* o) {
   lanes_kernel<Zmm8, false, 2>(x, h, out, o);
 }
-HINGE_FAST_TARGET_V3 void kernel_v3(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+HINGE_FAST_TARGET_V3 void kernel_v3(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                     LanesOutcome* o) {
   lanes_kernel<Ymm8, false>(x, h, out, o);
 }
-HINGE_FAST_TARGET_V3 void rescaled_v3(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+HINGE_FAST_TARGET_V3 void rescaled_v3(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                       LanesOutcome* o) {
   lanes_kernel<Ymm8, true>(x, h, out, o);
 }
-HINGE_FAST_TARGET_V4 void faithful_v4(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+HINGE_FAST_TARGET_V4 void faithful_v4(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                       LanesOutcome* o) {
   lanes_kernel<Zmm8, false, 1, true>(x, h, out, o);
 }
 HINGE_FAST_TARGET_V4 void faithful_rescaled_v4(const std::array<double, 12>* const* x, bool h,
-                                               HingeDerivatives<double>* const* out, LanesOutcome* o) {
+                                               const Destination* out, LanesOutcome* o) {
   lanes_kernel<Zmm8, true, 1, true>(x, h, out, o);
 }
-HINGE_FAST_TARGET_V3 void faithful_v3(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+HINGE_FAST_TARGET_V3 void faithful_v3(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                       LanesOutcome* o) {
   lanes_kernel<Ymm8, false, 1, true>(x, h, out, o);
 }
 HINGE_FAST_TARGET_V3 void faithful_rescaled_v3(const std::array<double, 12>* const* x, bool h,
-                                               HingeDerivatives<double>* const* out, LanesOutcome* o) {
+                                               const Destination* out, LanesOutcome* o) {
   lanes_kernel<Ymm8, true, 1, true>(x, h, out, o);
 }
-void faithful_baseline(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out, LanesOutcome* o) {
+void faithful_baseline(const std::array<double, 12>* const* x, bool h, const Destination* out, LanesOutcome* o) {
   lanes_kernel<Sse8, false, 1, true>(x, h, out, o);
 }
-void faithful_rescaled_baseline(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+void faithful_rescaled_baseline(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                 LanesOutcome* o) {
   lanes_kernel<Sse8, true, 1, true>(x, h, out, o);
 }
-void kernel_baseline(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out, LanesOutcome* o) {
+void kernel_baseline(const std::array<double, 12>* const* x, bool h, const Destination* out, LanesOutcome* o) {
   lanes_kernel<Sse8, false>(x, h, out, o);
 }
-void rescaled_baseline(const std::array<double, 12>* const* x, bool h, HingeDerivatives<double>* const* out,
+void rescaled_baseline(const std::array<double, 12>* const* x, bool h, const Destination* out,
                        LanesOutcome* o) {
   lanes_kernel<Sse8, true>(x, h, out, o);
 }
@@ -95,7 +97,7 @@ void evaluate_faithful(const Kernels& kernels, const std::array<double, 12>& x, 
 void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out,
               LanesOutcome o, bool faithful = false) {
   const std::array<double, 12>* xs[1] = {&x};
-  HingeDerivatives<double>* outs[1] = {&out};
+  const Destination outs[1] = {destination(out)};
   if (o.status == LanesOutcome::rescale) [[unlikely]] (faithful ? kernels.faithful_rescaled : kernels.rescaled)(xs, want_hessian, outs, &o);
   if (o.status == LanesOutcome::not_finite) check_finite(x);  // throws, naming the coordinate
   if (o.status == LanesOutcome::zero_hinge_edge) throw_zero_hinge_edge();
@@ -138,17 +140,48 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
 // The vector work of `kernels` on x, completed.
 void evaluate(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
   const std::array<double, 12>* xs[1] = {&x};
-  HingeDerivatives<double>* outs[1] = {&out};
+  const Destination outs[1] = {destination(out)};
   LanesOutcome o;
   kernels.common(xs, want_hessian, outs, &o);
   complete(kernels, x, want_hessian, out, o);
+}
+
+// The same, writing grad theta and Hess theta straight into the caller's arrays where the outcome is the
+// common one (theta's sign decided by the filter, nothing rescaled, no rare path); elsewhere evaluate()
+// into a HingeDerivatives, copied. Hess theta is symmetric bit for bit (each block stored with its
+// mirror), so its columns are its rows.
+// (PREFETCHW: the lines are asked for in the state a write needs; a processor without it runs the
+// instruction as a no-op.)
+__attribute__((target("prfchw"))) void evaluate_into(const Kernels& kernels, const std::array<double, 12>& x,
+                                                     double& theta, double* grad, double* hess) {
+  // The destination's cache lines asked for now, for writing: their transfers overlap the arithmetic
+  // instead of holding the stores at the end.
+  for (int i = 0; i < 144; i += 8) __builtin_prefetch(hess + i, 1, 3);
+  __builtin_prefetch(hess + 143, 1, 3);
+  __builtin_prefetch(grad, 1, 3), __builtin_prefetch(grad + 11, 1, 3);
+  const std::array<double, 12>* xs[1] = {&x};
+  const Destination outs[1] = {{grad, hess}};
+  LanesOutcome o;
+  kernels.common(xs, true, outs, &o);
+  const bool common = o.status == LanesOutcome::computed && o.certain_upper && o.certain_lower && o.fast_range &&
+                      o.exponent == 0 && o.sign != kUndecided && o.sign != 0 && !o.short_hinge_edge &&
+                      !(o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6) && !(o.s_minus < 0x1p-40);
+  if (common) [[likely]] {
+    theta = std::copysign(2 * std::atan2(o.s_minus, o.s_plus), double(o.sign));  // as complete()
+    return;
+  }
+  HingeDerivatives<double> d;
+  evaluate(kernels, x, true, d);
+  theta = d.theta;
+  std::copy(d.grad.data(), d.grad.data() + 12, grad);
+  std::copy(d.hess.data(), d.hess.data() + 144, hess);
 }
 
 // The faithful mode (hinge/fast/faithful.hpp) of `kernels` on x, completed.
 void evaluate_faithful(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian,
                        HingeDerivatives<double>& out) {
   const std::array<double, 12>* xs[1] = {&x};
-  HingeDerivatives<double>* outs[1] = {&out};
+  const Destination outs[1] = {destination(out)};
   LanesOutcome o;
   kernels.faithful(xs, want_hessian, outs, &o);
   complete(kernels, x, want_hessian, out, o, true);
@@ -162,7 +195,7 @@ void evaluate_all(const Kernels& kernels, const std::array<double, 12>* x, std::
   if (kernels.pair)
     for (; i + 2 <= count; i += 2) {
       const std::array<double, 12>* xs[2] = {&x[i], &x[i + 1]};
-      HingeDerivatives<double>* outs[2] = {&out[i], &out[i + 1]};
+      const Destination outs[2] = {destination(out[i]), destination(out[i + 1])};
       LanesOutcome o[2];
       kernels.pair(xs, want_hessian, outs, o);
       for (int h = 0; h < 2; ++h) {
@@ -192,6 +225,10 @@ void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, boo
 
 void hinge_kernel_faithful(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
   evaluate_faithful(best_kernels(), x, want_hessian, out);
+}
+
+void hinge_kernel_into(const std::array<double, 12>& x, double& theta, double* grad, double* hess) {
+  evaluate_into(best_kernels(), x, theta, grad, hess);
 }
 
 }  // namespace hinge::fast::detail
@@ -237,6 +274,10 @@ bool hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessi
   if (!isa_available(isa)) return false;
   detail::evaluate(detail::kernels_for(isa), x, want_hessian, out);
   return true;
+}
+
+void hinge_derivatives_into(const std::array<double, 12>& x, double& theta, double* grad, double* hess) {
+  detail::hinge_kernel_into(x, theta, grad, hess);
 }
 
 bool faithful_hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {

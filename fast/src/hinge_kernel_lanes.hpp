@@ -201,6 +201,13 @@ HINGE_FAST_INLINE void lanes_gradient(const T n[3], const T a, double* grad) {
   store_gradient(g, grad);
 }
 
+// Where the vector work writes a hinge's grad theta (12 doubles) and Hess theta (column k at hess + 12 k):
+// a HingeDerivatives' arrays, or the caller's own (hinge_derivatives_into).
+struct Destination {
+  double* grad;
+  double* hess;
+};
+
 // What the vector work leaves to the caller: the checks it could not decide, and theta's inputs.
 struct LanesOutcome {
   // alone: (two hinges at once) one of them needs a rare path, so both are to be evaluated one by one
@@ -236,7 +243,7 @@ HINGE_FAST_INLINE W pick12_of(const double* const* y) {
 // double-double, each output rounded once; no short-hinge-edge path is needed.
 template <class L, bool kRescaled, int B = 1, bool kFaithful = false>
 HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, bool want_hessian,
-                                    HingeDerivatives<double>* const* out, LanesOutcome* o) {
+                                    const Destination* out, LanesOutcome* o) {
   static_assert(B == 1 || (B == 2 && !kRescaled && !kFaithful));
   using W = std::conditional_t<B == 1, L, Twice<L>>;
   using D = DoubleDoubleOf<W>;
@@ -444,15 +451,15 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   // Eqs. (4) and (6), hinge by hinge.
   const auto& s = summary;
   if constexpr (kFaithful) {
-    lanes_gradient(s.n, s.a, out[0]->grad.data());
-    if (want_hessian) lanes_hessian(s.n, s.nv, s.q, s.a, s.rv, out[0]->hess.data());
+    lanes_gradient(s.n, s.a, out[0].grad);
+    if (want_hessian) lanes_hessian(s.n, s.nv, s.q, s.a, s.rv, out[0].hess);
   } else {
     each([&](auto h) {
       const L nh[3] = {part<h>(s.n[0]), part<h>(s.n[1]), part<h>(s.n[2])};
-      lanes_gradient(nh, part<h>(s.a), out[h]->grad.data());
+      lanes_gradient(nh, part<h>(s.a), out[h].grad);
       if (want_hessian) {
         const L qh[3] = {part<h>(s.q[0]), part<h>(s.q[1]), part<h>(s.q[2])};
-        lanes_hessian(nh, part<h>(s.nv), qh, part<h>(s.a), part<h>(s.rv), out[h]->hess.data());
+        lanes_hessian(nh, part<h>(s.nv), qh, part<h>(s.a), part<h>(s.rv), out[h].hess);
       }
     });
   }

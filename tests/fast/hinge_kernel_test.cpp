@@ -574,6 +574,33 @@ TEST(HingeKernel, ManyAtOnceGiveTheBitsOfOneAtATime) {
   for (std::size_t i = 0; i < ordinary.size(); ++i) EXPECT_EQ(floats[i].hess, hinge_derivatives<float>(ordinary[i]).hess);
 }
 
+TEST(HingeKernel, IntoTheCallersArraysGivesTheBitsOfHingeDerivatives) {
+  // hinge_derivatives_into: the common path writes straight into the arrays, the rare ones (the special
+  // hinges: folded, nearly flat, short hinge edges, rescaled) through a copy; Hess row-major.
+  std::vector<std::array<double, 12>> hinges = same_bits_hinges(test::cases(200));
+  const auto ordinary = test::well_shaped_hinges(test::cases(100), 37);
+  hinges.insert(hinges.end(), ordinary.begin(), ordinary.end());
+  for (const auto& x : hinges) {
+    const HingeDerivatives<double> d = hinge_derivatives<double>(x);
+    double theta = -1, grad[12], hess[144];
+    std::fill(grad, grad + 12, -1.0), std::fill(hess, hess + 144, -1.0);
+    hinge_derivatives_into(x, theta, grad, hess);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(theta), std::bit_cast<std::uint64_t>(d.theta)) << test::describe(x);
+    EXPECT_EQ(std::memcmp(grad, d.grad.data(), sizeof grad), 0) << test::describe(x);
+    bool same = true;
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j)
+        same = same && std::bit_cast<std::uint64_t>(hess[12 * i + j]) == std::bit_cast<std::uint64_t>(d.hess(i, j));
+    EXPECT_TRUE(same) << test::describe(x);
+  }
+  for (const auto& bad : {std::array<double, 12>{0.5, 1, 0, 1, 0, 0, 1, 0, 0, 0.5, -1, 0},
+                          std::array<double, 12>{0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, NAN, 0}}) {
+    double theta, grad[12], hess[144];
+    EXPECT_EQ(input_error([&] { hinge_derivatives_into(bad, theta, grad, hess); }),
+              input_error([&] { hinge_derivatives<double>(bad); }));
+  }
+}
+
 TEST(HingeKernel, ManyAtOnceThrowForTheFirstFailingHingeInOrder) {
   std::vector<std::array<double, 12>> hinges = test::well_shaped_hinges(8, 33);
   const std::array<double, 12> zero_area{0, 0, 0, 1, 0, 0, 2, 0, 0, 0.5, -1, 0};

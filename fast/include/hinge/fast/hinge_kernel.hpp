@@ -74,6 +74,11 @@ template <class Scalar>
 void hinge_derivatives(std::span<const std::array<double, 12>> x, std::span<HingeDerivatives<Scalar>> out,
                        bool want_hessian = true);
 
+// The double kernel writing straight into the caller's arrays: theta, grad theta (12) and Hess theta (144,
+// row-major; it is symmetric, so column-major too), bit for bit what hinge_derivatives<double>(x) gives,
+// with no intermediate matrix copied out (the conformance plugin's path, hinge/candidate.h). Throws as
+// hinge_derivatives does; the arrays' contents are then unspecified.
+void hinge_derivatives_into(const std::array<double, 12>& x, double& theta, double* grad, double* hess);
 
 #define HINGE_FAST_HINGE_EXTERN(S)                                                                  \
   extern template HingeDerivatives<S> hinge_derivatives<S>(const std::array<double, 12>&, bool);    \
