@@ -3,7 +3,8 @@
 one: the pictures of docs/scenes.md. Several states go side by side, one panel each, or into one panel
 with --spread (each shifted by DY metres in y: the five beams).
 
-Usage: render.py SCENE.json STATE.obj [STATE.obj ...] OUT.png [--titles T ...] [--spread DY]
+Usage: render.py SCENE.json STATE.obj [STATE.obj ...] OUT.png [--titles T ...] [--spread DY] [--exaggerate F]
+  --exaggerate F: z multiplied by F (small deflections; the title should say so)
 """
 import argparse
 import json
@@ -27,7 +28,7 @@ def read_obj(path):
     return np.array(v), np.array(f)
 
 
-def draw(ax, scene, meshes, title):
+def draw(ax, scene, meshes, title, zscale=1.0):
     for v, f in meshes:
         ax.plot_trisurf(v[:, 0], v[:, 1], v[:, 2], triangles=f, color="#6fa8dc", edgecolor="#1c4587",
                         linewidth=0.15, alpha=0.95, shade=True)
@@ -45,7 +46,8 @@ def draw(ax, scene, meshes, title):
     ax.set_zlim(mid[2] - half, mid[2] + half)
     ax.set_box_aspect((1, 1, 1))
     ax.view_init(elev=25, azim=-60)
-    ax.set_xlabel("x (m)"), ax.set_ylabel("y (m)"), ax.set_zlabel("z (m)")
+    ax.set_xlabel("x (m)"), ax.set_ylabel("y (m)")
+    ax.set_zlabel("z (m)" if zscale == 1 else "z (m) x %g" % zscale)
     ax.set_title(title, fontsize=10)
 
 
@@ -55,22 +57,25 @@ def main():
     p.add_argument("files", nargs="+", help="STATE.obj ... OUT.png")
     p.add_argument("--titles", nargs="*", default=None)
     p.add_argument("--spread", type=float, default=None)
+    p.add_argument("--exaggerate", type=float, default=1.0)
     a = p.parse_args()
     if len(a.files) < 2:
         p.error("give at least one STATE.obj and the OUT.png")
     states, out = a.files[:-1], a.files[-1]
     scene = json.load(open(a.scene))
     meshes = [read_obj(s) for s in states]
+    for v, _ in meshes:
+        v[:, 2] *= a.exaggerate
     titles = a.titles or [scene.get("name", "")] * len(states)
     if a.spread is not None:
         for i, (v, _) in enumerate(meshes):
             v[:, 1] += i * a.spread
         fig = plt.figure(figsize=(6, 5), dpi=110)
-        draw(fig.add_subplot(projection="3d"), scene, meshes, titles[0])
+        draw(fig.add_subplot(projection="3d"), scene, meshes, titles[0], a.exaggerate)
     else:
         fig = plt.figure(figsize=(5 * len(meshes), 4.6), dpi=110)
         for i, (m, t) in enumerate(zip(meshes, titles)):
-            draw(fig.add_subplot(1, len(meshes), i + 1, projection="3d"), scene, [m], t)
+            draw(fig.add_subplot(1, len(meshes), i + 1, projection="3d"), scene, [m], t, a.exaggerate)
     fig.tight_layout()
     fig.savefig(out)
 
