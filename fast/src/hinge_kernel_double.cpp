@@ -92,10 +92,29 @@ constexpr Kernels kAvx512{kernel_v4, rescaled_v4, pair_v4, faithful_v4, faithful
 void evaluate_faithful(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian,
                        HingeDerivatives<double>& out);
 
+// Whether the outcome `o` of the (non-faithful) vector work is the common one, which complete() finishes
+// with theta alone: computed at its scale (nothing rescaled, in the fast range), both triangles certified
+// nondegenerate, theta's sign decided and nonzero, and none of the rare paths below (short hinge edge,
+// nearly flat or folded with a shortish one, nearly flat).
+bool common_outcome(const LanesOutcome& o) {
+  return o.status == LanesOutcome::computed && o.fast_range && o.exponent == 0 && o.certain_upper &&
+         o.certain_lower && o.sign != kUndecided && o.sign != 0 && !o.short_hinge_edge &&
+         !(o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6) && !(o.s_minus < 0x1p-40);
+}
+// theta from the outcome, its sign decided (copysign rather than a branch on the sign, which is data).
+double theta_of(const LanesOutcome& o, int sign) { return std::copysign(2 * std::atan2(o.s_minus, o.s_plus), double(sign)); }
+
 // The outcome `o` of the vector work on x (its results already in `out`), completed (`faithful`: of the
 // faithful kernels).
 void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out,
               LanesOutcome o, bool faithful = false) {
+  if (!faithful && common_outcome(o)) [[likely]] {
+    out.on_branch_cut = false;
+    out.theta = theta_of(o, o.sign);
+    out.tan_half_theta = std::copysign(o.tan_half_theta, double(o.sign));  // eq. (12)
+    if (!want_hessian) out.hess.setZero();
+    return;
+  }
   const std::array<double, 12>* xs[1] = {&x};
   const Destination outs[1] = {destination(out)};
   if (o.status == LanesOutcome::rescale) [[unlikely]] (faithful ? kernels.faithful_rescaled : kernels.rescaled)(xs, want_hessian, outs, &o);
@@ -113,9 +132,7 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
     out.tan_half_theta = o.folded ? std::numeric_limits<double>::infinity() : 0.0;
   } else {
     out.on_branch_cut = false;
-    // (copysign rather than a branch on the sign, which is data)
-    out.theta = faithful ? faithful_theta(x, sign, o.exponent, o.faithful)
-                         : std::copysign(2 * std::atan2(o.s_minus, o.s_plus), double(sign));
+    out.theta = faithful ? faithful_theta(x, sign, o.exponent, o.faithful) : theta_of(o, sign);
     out.tan_half_theta = std::copysign(o.tan_half_theta, double(sign));  // eq. (12)
   }
   if (!want_hessian) out.hess.setZero();
@@ -163,11 +180,8 @@ __attribute__((target("prfchw"))) void evaluate_into(const Kernels& kernels, con
   const Destination outs[1] = {{grad, hess}};
   LanesOutcome o;
   kernels.common(xs, true, outs, &o);
-  const bool common = o.status == LanesOutcome::computed && o.certain_upper && o.certain_lower && o.fast_range &&
-                      o.exponent == 0 && o.sign != kUndecided && o.sign != 0 && !o.short_hinge_edge &&
-                      !(o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6) && !(o.s_minus < 0x1p-40);
-  if (common) [[likely]] {
-    theta = std::copysign(2 * std::atan2(o.s_minus, o.s_plus), double(o.sign));  // as complete()
+  if (common_outcome(o)) [[likely]] {
+    theta = theta_of(o, o.sign);
     return;
   }
   HingeDerivatives<double> d;
