@@ -163,19 +163,23 @@ void evaluate(const Kernels& kernels, const std::array<double, 12>& x, bool want
   complete(kernels, x, want_hessian, out, o);
 }
 
+// Asks for the cache lines of [p, p + bytes) in the state a write needs, so that their transfers overlap
+// the arithmetic that precedes the stores instead of holding the stores back. PREFETCHW as inline assembly:
+// GCC treats __builtin_prefetch as free of effects and deletes a function made only of them, and emits
+// PREFETCHW for it only under -mprfchw; a processor without the instruction runs it as a no-op.
+void prefetch_for_writing(const void* p, std::size_t bytes) {
+  const char* c = static_cast<const char*>(p);
+  for (std::size_t i = 0; i < bytes; i += 64) asm volatile("prefetchw %0" : : "m"(c[i]));
+  asm volatile("prefetchw %0" : : "m"(c[bytes - 1]));
+}
+
 // The same, writing grad theta and Hess theta straight into the caller's arrays where the outcome is the
 // common one (theta's sign decided by the filter, nothing rescaled, no rare path); elsewhere evaluate()
 // into a HingeDerivatives, copied. Hess theta is symmetric bit for bit (each block stored with its
 // mirror), so its columns are its rows.
-// (PREFETCHW: the lines are asked for in the state a write needs; a processor without it runs the
-// instruction as a no-op.)
-__attribute__((target("prfchw"))) void evaluate_into(const Kernels& kernels, const std::array<double, 12>& x,
-                                                     double& theta, double* grad, double* hess) {
-  // The destination's cache lines asked for now, for writing: their transfers overlap the arithmetic
-  // instead of holding the stores at the end.
-  for (int i = 0; i < 144; i += 8) __builtin_prefetch(hess + i, 1, 3);
-  __builtin_prefetch(hess + 143, 1, 3);
-  __builtin_prefetch(grad, 1, 3), __builtin_prefetch(grad + 11, 1, 3);
+void evaluate_into(const Kernels& kernels, const std::array<double, 12>& x, double& theta, double* grad, double* hess) {
+  prefetch_for_writing(hess, 144 * sizeof(double));
+  prefetch_for_writing(grad, 12 * sizeof(double));
   const std::array<double, 12>* xs[1] = {&x};
   const Destination outs[1] = {{grad, hess}};
   LanesOutcome o;
@@ -208,6 +212,7 @@ void evaluate_all(const Kernels& kernels, const std::array<double, 12>* x, std::
   std::size_t i = 0;
   if (kernels.pair)
     for (; i + 2 <= count; i += 2) {
+      if (i + 4 <= count) prefetch_for_writing(&out[i + 2], 2 * sizeof(HingeDerivatives<double>));  // a pair ahead
       const std::array<double, 12>* xs[2] = {&x[i], &x[i + 1]};
       const Destination outs[2] = {destination(out[i]), destination(out[i + 1])};
       LanesOutcome o[2];
@@ -217,7 +222,10 @@ void evaluate_all(const Kernels& kernels, const std::array<double, 12>* x, std::
         else complete(kernels, x[i + h], want_hessian, out[i + h], o[h]);
       }
     }
-  for (; i < count; ++i) evaluate(kernels, x[i], want_hessian, out[i]);
+  for (; i < count; ++i) {
+    prefetch_for_writing(&out[i], sizeof(HingeDerivatives<double>));
+    evaluate(kernels, x[i], want_hessian, out[i]);
+  }
 }
 
 const Kernels& kernels_for(Isa isa) { return isa == Isa::avx512 ? kAvx512 : isa == Isa::avx2 ? kAvx2 : kBaseline; }
