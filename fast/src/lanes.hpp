@@ -85,23 +85,24 @@ struct Halves8 {
 using Ymm8 = Halves8<true>;
 using Sse8 = Halves8<false>;
 
-// a b + c rounded once, lane by lane, with neither a fused multiply-add instruction nor a library call (the
-// baseline x86-64 has no FMA, and libm's fma is a call that spills every vector register): Dekker's exact
-// product p + e = a b, with Veltkamp's split; then Boldo and Melquiond's emulation (IEEE Trans. Computers
-// 57(4), 2008, "Emulation of FMA and correctly rounded sums: proved algorithms using rounding to odd"):
-// th + tl = c + p exactly, v = tl + e rounded to odd (rounded to nearest, then moved one unit towards the
-// exact sum where that is inexact and the last bit even), the result th + v rounded to nearest. The same
-// bits as a fused multiply-add wherever the split does not overflow (|a|, |b| < 2^995) and the product's
-// error does not underflow (the kernels' rescaled stencils stay far inside both). A zero product takes the
-// plain sum c + p, which carries the fused multiply-add's sign of zero.
-// e with p + e = a b exactly for p = a b rounded (Dekker's product with Veltkamp's split), under the same
-// conditions: what a fused multiply-add gives for a b - p, at a third of fused_without_fma's cost.
+// e with p + e = a b exactly, p = a b rounded (Dekker's product with Veltkamp's split), where the split
+// does not overflow (|a|, |b| < 2^995) and the error does not underflow: what a fused multiply-add gives
+// for a b - p, at a third of fused_without_fma's cost.
 HINGE_FAST_INLINE Double2 product_error_without_fma(Double2 a, Double2 b, Double2 p) {
   const Double2 veltkamp = Double2{} + 134217729.0;  // 2^27 + 1
   const Double2 ta = a * veltkamp, ah = ta - (ta - a), al = a - ah;
   const Double2 tb = b * veltkamp, bh = tb - (tb - b), bl = b - bh;
   return (((ah * bh - p) + ah * bl) + al * bh) + al * bl;
 }
+// a b + c rounded once, lane by lane, with neither a fused multiply-add instruction nor a library call (the
+// baseline x86-64 has no FMA, and libm's fma is a call that spills every vector register): the exact
+// product p + e = a b above; then Boldo and Melquiond's emulation (IEEE Trans. Computers
+// 57(4), 2008, "Emulation of FMA and correctly rounded sums: proved algorithms using rounding to odd"):
+// th + tl = c + p exactly, v = tl + e rounded to odd (rounded to nearest, then moved one unit towards the
+// exact sum where that is inexact and the last bit even), the result th + v rounded to nearest. The same
+// bits as a fused multiply-add under the product's conditions (the kernels' rescaled stencils stay far
+// inside them). A zero product takes the
+// plain sum c + p, which carries the fused multiply-add's sign of zero.
 HINGE_FAST_INLINE Double2 fused_without_fma(Double2 a, Double2 b, Double2 c) {
   const Double2 p = a * b;
   const Double2 e = product_error_without_fma(a, b, p);  // p + e = a b exactly

@@ -61,7 +61,7 @@ TEST(Exact, WheneverTheFilterDecidesItGivesTheSignOfTheComputedDeterminant) {
   EXPECT_GT(nonzero, 0);
 }
 
-TEST(Exact, FusedWithoutFmaIsTheFusedMultiplyAddBitForBit) {
+TEST(Exact, FusedWithoutFmaAndTheProductErrorAreTheFusedMultiplyAddsBitForBit) {
   // Against std::fma (correctly rounded: the FMA instruction or glibc's). Operands over the kernels' range
   // and beyond (|a|, |b| up to 2^400; products down to 2^-800, so the product's error stays normal), every
   // sign, and the cases that decide the rounding: c cancelling the product to its last bits, c far below
@@ -100,13 +100,17 @@ TEST(Exact, FusedWithoutFmaIsTheFusedMultiplyAddBitForBit) {
           if (rng() % 4 == 0) a[i] = sign(rng) ? 0.0 : -0.0;
       }
     }
-    const Double4 got = fused_without_fma(a, b, c);
+    const Double4 got = fused_without_fma(a, b, c), p = a * b, error = product_error_without_fma(a, b, p);
     for (int i = 0; i < 4; ++i) {
       ++compared;
       const double want = std::fma(a[i], b[i], c[i]);
       if (std::bit_cast<std::uint64_t>(got[i]) != std::bit_cast<std::uint64_t>(want) && ++mismatches <= 5)
         ADD_FAILURE() << std::hexfloat << "a " << a[i] << " b " << b[i] << " c " << c[i] << ": " << got[i]
                       << " against " << want;
+      const double want_error = std::fma(a[i], b[i], -p[i]);  // the exact error of the product
+      if (std::bit_cast<std::uint64_t>(error[i]) != std::bit_cast<std::uint64_t>(want_error) && ++mismatches <= 5)
+        ADD_FAILURE() << std::hexfloat << "a " << a[i] << " b " << b[i] << ": product error " << error[i]
+                      << " against " << want_error;
     }
   }
   EXPECT_EQ(mismatches, 0) << "of " << compared;
