@@ -27,6 +27,8 @@ import tempfile
 import numpy as np
 from scipy.spatial import Delaunay
 
+from objmesh import interior_edges, read_obj
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 L, W = 1.0, 0.1
 RESOLUTIONS = {366: (51, 6), 787: (81, 9), 1372: (111, 12)}
@@ -98,11 +100,6 @@ def cmd_meshes():
         print("beams.py: meshes/beam-%d.obj: %d vertices, %d faces, %d clamped" % (n, len(P), len(F), clamped))
 
 
-def read_vertices(path):
-    with open(path) as src:
-        return np.array([[float(t) for t in line.split()[1:4]] for line in src if line.startswith("v ")])
-
-
 def cmd_table(hinge, out_json):
     rows = []
     with tempfile.TemporaryDirectory(prefix="beams-") as work:
@@ -121,7 +118,7 @@ def cmd_table(hinge, out_json):
                         sys.exit("beams.py: hinge simulate failed (exit %d): %s" % (p.returncode, p.stderr))
                     summary = json.load(open(os.path.join(out, "summary.json")))
                     frames = sorted(os.listdir(os.path.join(out, "frames")))
-                    before, last = (read_vertices(os.path.join(out, "frames", f)) for f in frames[-2:])
+                    before, last = (read_obj(os.path.join(out, "frames", f))[0] for f in frames[-2:])
                     z = last[:, 2].min()
                     still = np.abs(last - before).max()   # motion over the last output interval (0.5 s)
                     row = {"vertices": n, "beam": beam, "method": method, "status": summary["status"],
@@ -137,21 +134,12 @@ def cmd_table(hinge, out_json):
     print_table(rows)
 
 
-def interior_edges(F):
-    count = {}
-    for f in F:
-        for s in range(3):
-            e = tuple(sorted((int(f[s]), int(f[(s + 1) % 3]))))
-            count[e] = count.get(e, 0) + 1
-    return sum(1 for c in count.values() if c == 2)
-
-
 def print_table(rows):
     print("| vertices | beam | Newton its | time (fast) | ms per iteration | bending us per interior edge per "
           "iteration | bending share: fast | reference | autodiff | lowest z | motion in the last 0.5 s |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for n in RESOLUTIONS:
-        edges = interior_edges(mesh(n)[1])
+        edges = len(interior_edges(mesh(n)[1]))
         for beam in range(1, 6):
             r = {x["method"]: x for x in rows if x["vertices"] == n and x["beam"] == beam}
             f = r["fast"]

@@ -34,6 +34,8 @@ import numpy as np
 import scipy.sparse as sps
 import scipy.sparse.linalg as spl
 
+from objmesh import interior_edges, read_obj
+
 L, W = 1.0, 0.1
 MATERIAL = {"density": 1000, "young": 1e10, "poisson": 0.0, "thickness": 0.01}
 G = 9.81
@@ -86,16 +88,8 @@ def independent_tip(P, F, pins, tip, k):
     mass = np.zeros(n)
     for t, f in enumerate(F):
         mass[list(f)] += m["density"] * m["thickness"] * area[t] / 3
-    edges = {}
-    for t, f in enumerate(F):
-        for s in range(3):
-            e = tuple(sorted((f[s], f[(s + 1) % 3])))
-            edges.setdefault(e, []).append(t)
     rows, cols, vals = [], [], []
-    for (i, j), ts in edges.items():
-        if len(ts) != 2:
-            continue
-        t1, t2 = ts
+    for (i, j), (t1, t2) in interior_edges(F).items():
         e = P[j] - P[i]
         mvec = np.array([-e[1], e[0]]) / np.linalg.norm(e)
         coef = {}
@@ -134,8 +128,7 @@ def simulate(hinge, P, F, pins, tip, k, work):
                        capture_output=True, text=True)
     if p.returncode != 0:
         raise RuntimeError("hinge simulate failed: " + p.stderr)
-    with open(os.path.join(out, "final.obj")) as src:
-        z = [float(line.split()[3]) for line in src if line.startswith("v ")]
+    z = read_obj(os.path.join(out, "final.obj"))[0][:, 2]
     summary = json.load(open(os.path.join(out, "summary.json")))
     return float(np.mean([z[i] for i in tip])), summary
 

@@ -48,20 +48,10 @@ def main():
 def largest_angle(path):
     """max |theta| over the interior edges of an OBJ (theta = atan2(|n x nt| sign, n . nt), degrees)."""
     import numpy as np
-    v, f = [], []
-    for line in open(path):
-        t = line.split()
-        if t and t[0] == "v":
-            v.append([float(x) for x in t[1:4]])
-        elif t and t[0] == "f":
-            f.append([int(x) - 1 for x in t[1:4]])
-    v, f = np.array(v), np.array(f)
+    from objmesh import interior_edges, read_obj
+    v, f = read_obj(path)
     n = np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]])
-    faces = {}
-    for t, tri in enumerate(f):
-        for s in range(3):
-            faces.setdefault(tuple(sorted((tri[s], tri[(s + 1) % 3]))), []).append(t)
-    pairs = np.array([ts for ts in faces.values() if len(ts) == 2])
+    pairs = np.array(list(interior_edges(f).values()))
     a, b = n[pairs[:, 0]], n[pairs[:, 1]]
     angle = np.arctan2(np.linalg.norm(np.cross(a, b), axis=1), (a * b).sum(axis=1))
     return math.degrees(angle.max())

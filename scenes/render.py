@@ -15,17 +15,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def read_obj(path):
-    v, f = [], []
-    with open(path) as src:
-        for line in src:
-            t = line.split()
-            if t and t[0] == "v":
-                v.append([float(x) for x in t[1:4]])
-            elif t and t[0] == "f":
-                f.append([int(x.split("/")[0]) - 1 for x in t[1:4]])
-    return np.array(v), np.array(f)
+from objmesh import read_obj  # noqa: E402
 
 
 def draw(ax, scene, meshes, title, zscale=1.0):
