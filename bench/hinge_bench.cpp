@@ -40,6 +40,7 @@
 #include "hinge/fast/assemble.hpp"
 #include "hinge/fast/faithful.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
+#include "hinge/oracle/oracle.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "hinge/reference/samples.hpp"
@@ -173,6 +174,20 @@ void hinge_fast_many(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
 }
 
+// The certified oracle, one hinge a call: with its fast path (the default), and with the exact stage and
+// enclosures alone (what every hinge cost before the fast path).
+void hinge_oracle(benchmark::State& state, bool fast_path) {
+  const auto& hs = bench_hinges();
+  oracle::Options options;
+  options.fast_path = fast_path;
+  for (auto _ : state)
+    for (const auto& x : hs) {
+      auto c = oracle::certified_theta_derivatives(x, options);
+      benchmark::DoNotOptimize(c);
+    }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+}
+
 void hinge_reference(benchmark::State& state) {
   const auto& hs = bench_hinges();
   for (auto _ : state)
@@ -303,6 +318,14 @@ void summary(const Capture& c, const std::vector<int>& sides, double ghz_before,
     if (ghz > 0) std::printf(" (%.0f cycles)", ghz * 1e9 * hq->seconds / 1024);
     std::printf("\n");
   }
+  if (const auto ho = c.get("hinge/oracle"); ho && hf) {
+    std::printf("per hinge, certified oracle: %.2f us with the fast path, %.1f x hinge/fast", 1e6 * ho->seconds / 1024,
+                ho->seconds / hf->seconds);
+    if (const auto he = c.get("hinge/oracle_enclosures"))
+      std::printf("; %.1f us by the exact stage and enclosures alone (%.1f x the fast path)", 1e6 * he->seconds / 1024,
+                  he->seconds / ho->seconds);
+    std::printf("\n");
+  }
   if (const auto cf = c.get("capi/fast"), floor = c.get("capi/floor"); cf && floor) {
     std::printf("C interface, 1e5 hinges one call each: fast %.1f ns per hinge, memory floor %.1f ns, fast/floor %.2f\n",
                 1e9 * cf->seconds / kCapiHinges, 1e9 * floor->seconds / kCapiHinges, cf->seconds / floor->seconds);
@@ -362,6 +385,8 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("hinge/fast_many", hinge_fast_many);
   benchmark::RegisterBenchmark("hinge/reference", hinge_reference);
   benchmark::RegisterBenchmark("hinge/faithful", hinge_faithful);
+  benchmark::RegisterBenchmark("hinge/oracle", hinge_oracle, true)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("hinge/oracle_enclosures", hinge_oracle, false)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("capi/fast", capi_fast_run)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("capi/floor", capi_floor)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("capi/many", capi_many)->Unit(benchmark::kMillisecond);

@@ -5,15 +5,18 @@
 // if both end points of an interval containing v round to the same double d, every point of it does,
 // v included; d is the double nearest to v (the tie rule only matters at a midpoint, which the integer
 // test below decides exactly).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "hinge/oracle/oracle.hpp"
 #include "hinge/reference/errors.hpp"
+#include "fast_path.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"
 
@@ -114,6 +117,7 @@ bool same_angle(const ExactHinge& a, const ExactHinge& b) {
 namespace {
 
 using detail::Interval;
+using detail::kOutputs;
 using detail::Real;
 using detail::Rounding;
 using detail::Verdict;
@@ -169,14 +173,17 @@ std::string output_name(int k) {
 
 }  // namespace
 
-CertifiedTheta certify(const ExactHinge& e, const Options& options) {
+namespace {
+
+// Stages 1 and 2 for the outputs not yet `done` (the fast path's decisions, if any).
+CertifiedTheta certify_rest(const ExactHinge& e, const Options& options, std::array<bool, kOutputs> done,
+                            std::array<double, kOutputs> value) {
   if (!e.has_hessian) throw std::invalid_argument("certify: the exact hinge was computed without its Hessian");
-  constexpr int count = 1 + 12 + 144;
+  constexpr int count = kOutputs;
   CertifiedTheta out;
+  out.path = Path::exact;
   out.exact_bits = e.max_bits();
-  std::array<bool, count> done{};
-  std::array<double, count> value{};
-  int remaining = count;
+  int remaining = static_cast<int>(std::count(done.begin(), done.end(), false));
   auto settle = [&](int k, double v) {
     done[k] = true;
     value[k] = v;
@@ -184,10 +191,11 @@ CertifiedTheta certify(const ExactHinge& e, const Options& options) {
   };
   // Exactly zero outputs need no precision at all.
   for (int k = 0; k < 12; ++k)
-    if (sgn(e.g[k]) == 0) settle(1 + k, 0.0);
+    if (!done[1 + k] && sgn(e.g[k]) == 0) settle(1 + k, 0.0);
   for (int k = 0; k < 144; ++k)
-    if (sgn(e.h[k]) == 0) settle(13 + k, 0.0);
-  if (sgn(e.Y) == 0 && sgn(e.X) > 0) settle(0, 0.0);
+    if (!done[13 + k] && sgn(e.h[k]) == 0) settle(13 + k, 0.0);
+  if (!done[0] && sgn(e.Y) == 0) settle(0, sgn(e.X) > 0 ? 0.0 : std::numbers::pi);  // the branch cut: +pi rounded
+  if (remaining > 0) out.path = Path::interval;
 
   const unsigned cap = std::max(options.max_bits, options.start_bits);
   for (unsigned bits = std::max(53u, options.start_bits); remaining > 0; bits *= 2) {
@@ -238,8 +246,29 @@ CertifiedTheta certify(const ExactHinge& e, const Options& options) {
   return out;
 }
 
+}  // namespace
+
+CertifiedTheta certify(const ExactHinge& e, const Options& options) { return certify_rest(e, options, {}, {}); }
+
 CertifiedTheta certified_theta_derivatives(const std::array<double, 12>& x, const Options& options) {
-  return certify(exact_hinge(x, true), options);
+  if (!options.fast_path) return certify(exact_hinge(x, true), options);
+  const detail::FastDecisions fast = detail::fast_path(x);
+  if (fast.count < kOutputs) return certify_rest(exact_hinge(x, true), options, fast.decided, fast.value);
+  CertifiedTheta out;
+  out.path = Path::fast;
+  out.theta = fast.value[0];
+  std::copy(fast.value.begin() + 1, fast.value.begin() + 13, out.grad.begin());
+  std::copy(fast.value.begin() + 13, fast.value.end(), out.hess.begin());
+  return out;
+}
+
+const char* path_name(Path p) {
+  switch (p) {
+    case Path::fast: return "fast";
+    case Path::exact: return "exact";
+    case Path::interval: return "interval";
+  }
+  return "?";
 }
 
 }  // namespace hinge::oracle

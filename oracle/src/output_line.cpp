@@ -15,7 +15,7 @@ std::string certified_line(const std::string& id_json, const CertifiedTheta& c, 
   std::string line = io::result_line(id_json, r);
   line.pop_back();  // '}'
   if (report_precision)
-    line += ", \"bits\": " + std::to_string(c.bits) + ", \"exact_bits\": " + std::to_string(c.exact_bits) +
+    line += std::string(", \"path\": \"") + path_name(c.path) + "\", \"bits\": " + std::to_string(c.bits) + ", \"exact_bits\": " + std::to_string(c.exact_bits) +
             ", \"ties\": " + std::to_string(c.ties) + ", \"decided_exactly\": " + std::to_string(c.decided_exactly);
   if (!c.uncertified.empty()) {
     nlohmann::json flags = nlohmann::json::array();

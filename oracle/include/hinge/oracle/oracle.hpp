@@ -28,7 +28,16 @@ namespace hinge::oracle {
 struct Options {
   unsigned start_bits = 128;  // first working precision
   unsigned max_bits = 4096;   // the precision cap (documented in oracle/README.md)
+  bool fast_path = true;      // try the double-double fast path first (certified_theta_derivatives)
 };
+
+// Which stages a hinge's certification needed.
+enum class Path {
+  fast,      // the fast path decided every output
+  exact,     // and the exact stage the rest (exact zeros: flat or axis-aligned hinges)
+  interval,  // and MPFI enclosures (Ziv's strategy) some output
+};
+const char* path_name(Path p);  // "fast", "exact", "interval"
 
 // An output the oracle could not certify within Options::max_bits.
 struct Uncertified {
@@ -41,16 +50,20 @@ struct CertifiedTheta {
   double theta = 0;
   std::array<double, 12> grad{};
   std::array<double, 144> hess{};  // row-major
-  unsigned bits = 0;               // largest working precision the certification needed
-  std::size_t exact_bits = 0;      // size of the largest integer of the exact stage
+  Path path = Path::interval;
+  unsigned bits = 0;               // largest working precision of the enclosures (0: none needed)
+  std::size_t exact_bits = 0;      // size of the largest integer of the exact stage (0: not run)
   unsigned ties = 0;               // outputs exactly halfway between two doubles (rounded to even)
   unsigned decided_exactly = 0;    // outputs whose enclosure straddled a midpoint, decided in integers
   std::vector<Uncertified> uncertified;
 };
 
 // Throws hinge::InputError (non-finite or degenerate input, the reference's messages) or
-// hinge::DomainError (an exact output outside the range of double).
+// hinge::DomainError (an exact output outside the range of double). With options.fast_path (the default)
+// the fast path (proofs/oracle-fast-path.md: eqs. (4)-(6) in double-double with a rigorous error bound)
+// decides what it can, the exact stage and the enclosures the rest: the same doubles either way.
 CertifiedTheta certified_theta_derivatives(const std::array<double, 12>& x, const Options& options = {});
+// Stages 1 and 2 only (no fast path): path is `exact` or `interval`.
 CertifiedTheta certify(const ExactHinge& exact, const Options& options = {});
 
 }  // namespace hinge::oracle

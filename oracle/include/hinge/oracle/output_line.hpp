@@ -8,7 +8,7 @@
 
 namespace hinge::oracle {
 
-// {"id", "theta", "grad", "hess"} (without the newline), then with `report_precision` "bits",
+// {"id", "theta", "grad", "hess"} (without the newline), then with `report_precision` "path", "bits",
 // "exact_bits", "ties", "decided_exactly", then, if any output could not be certified, "uncertified":
 // [{"output", "enclosure": [lower, upper]}].
 std::string certified_line(const std::string& id_json, const CertifiedTheta& c, bool report_precision);

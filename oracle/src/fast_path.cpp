@@ -1,0 +1,172 @@
+// The certified oracle's fast path (fast_path.hpp; the proof: proofs/oracle-fast-path.md).
+#include "fast_path.hpp"
+
+#include <mpfr.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "bounded.hpp"
+#include "exact_form.hpp"
+
+namespace hinge::oracle::detail {
+namespace {
+
+using bounded::inflate;
+using bounded::lower;
+
+// Whether every real within v.err of v.hi + v.lo rounds to the double v.hi, and the double (v.hi 2^scale)
+// is that of every real of the interval scaled by 2^scale: the interval lies strictly inside v.hi's
+// rounding interval (half the gap to each neighbour; the gap below a power of two is half the gap above),
+// and v.hi 2^scale is far from underflow and overflow, where rounding commutes with the scaling. An
+// exactly known zero (err 0) is +0, as the exact stage gives it.
+bool decide(const Bounded& v, int scale, double& out) {
+  if (!(std::isfinite(v.hi) && std::isfinite(v.lo) && std::isfinite(v.err))) return false;
+  if (v.hi == 0) {
+    if (v.lo != 0 || v.err != 0) return false;
+    out = 0.0;
+    return true;
+  }
+  // |hi| = 1.f 2^e with e in [-900, 900] and e + scale in [-1021, 1021]: the gap above is 2^(e - 52),
+  // the gap below the same, or half of it when f = 0.
+  const auto bits = std::bit_cast<std::uint64_t>(v.hi);
+  const int e = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
+  if (e < -900 || e > 900 || e + scale < -1021 || e + scale > 1021) return false;
+  const bool power_of_two = (bits & ((std::uint64_t{1} << 52) - 1)) == 0;
+  const double half_gap = power_of_two ? std::bit_cast<double>(static_cast<std::uint64_t>(e - 54 + 1023) << 52)
+                                       : std::bit_cast<double>(static_cast<std::uint64_t>(e - 53 + 1023) << 52);
+  if ((std::fabs(v.lo) + v.err) * inflate >= half_gap) return false;
+  // hi 2^scale: the exponent field replaced (exact; normal by the range above).
+  constexpr std::uint64_t exponent_field = std::uint64_t{0x7ff} << 52;
+  out = std::bit_cast<double>((bits & ~exponent_field) | (static_cast<std::uint64_t>(e + scale + 1023) << 52));
+  return true;
+}
+
+// What the arctangent needs, computed once with MPFR at 256 bits and rounded to double-doubles: atan(k/64)
+// for k = 0..64, pi/2, and 1/(2j + 1) for the series (bounded reciprocals). A double-double v = hi + lo
+// rounded from a 256-bit value V is within |lo| 2^-53 + |V| 2^-255 of the exact value.
+struct ArctanTable {
+  std::array<Bounded, 65> atan_k;
+  Bounded half_pi;
+  std::array<Bounded, 9> odd_inverse;
+  ArctanTable() {
+    mpfr_t v;
+    mpfr_init2(v, 256);
+    auto take = [&v] {
+      const double hi = mpfr_get_d(v, MPFR_RNDN);
+      mpfr_sub_d(v, v, hi, MPFR_RNDN);  // exact at 256 bits
+      const double lo = mpfr_get_d(v, MPFR_RNDN);
+      return Bounded(hi, lo, (std::fabs(lo) * 0x1p-53 + std::fabs(hi) * 0x1p-254) * inflate);
+    };
+    for (int k = 0; k <= 64; ++k) {
+      mpfr_set_ui(v, static_cast<unsigned long>(k), MPFR_RNDN);
+      mpfr_div_2ui(v, v, 6, MPFR_RNDN);
+      mpfr_atan(v, v, MPFR_RNDN);
+      atan_k[k] = take();
+    }
+    mpfr_const_pi(v, MPFR_RNDN);
+    mpfr_div_2ui(v, v, 1, MPFR_RNDN);
+    half_pi = take();
+    mpfr_clear(v);
+    for (int j = 0; j < 9; ++j) odd_inverse[j] = reciprocal(Bounded(2.0 * j + 1));
+  }
+};
+
+// atan(t), bounded: t < 0 by symmetry, t > 1 as pi/2 - atan(1/t); then a in [0, 1] is c = k/64 (the
+// nearest) plus atan(z), z = (a - c) / (1 + a c), |z| <= 1/128, by its series through z^17, whose
+// remainder is below |z|^19 / 19 (alternating, decreasing).
+Bounded arctan(const Bounded& t) {
+  static const ArctanTable table;
+  const bool negative = t.hi < 0, inverted = std::fabs(t.hi) > 1;
+  Bounded a = negative ? -t : t;
+  if (inverted) a = reciprocal(a);
+  if (!(std::isfinite(a.hi) && a.hi >= 0 && a.hi <= 1)) return undefined();
+  const int k = static_cast<int>(std::nearbyint(a.hi * 64));
+  const Bounded c(k / 64.0);
+  const Bounded z = (a - c) / (Bounded(1) + a * c);
+  const Bounded p = z * z;
+  Bounded s = table.odd_inverse[8];
+  for (int j = 7; j >= 0; --j) s = table.odd_inverse[j] - p * s;
+  Bounded r = z * s;
+  const double mz = bounded::magnitude(z), m2 = mz * mz, m4 = m2 * m2, m8 = m4 * m4, m16 = m8 * m8;
+  r.err = (r.err + m16 * m2 * mz / 16) * inflate + bounded::eta;
+  r = table.atan_k[k] + r;
+  if (inverted) r = table.half_pi - r;
+  return negative ? -r : r;
+}
+
+}  // namespace
+
+FastDecisions fast_path(const std::array<double, 12>& x) {
+  FastDecisions d;
+  for (double c : x)
+    if (!std::isfinite(c) || std::fabs(c) > 0x1p1000) return d;
+  // The edges exactly, as double-doubles (a difference of two doubles is a two_sum).
+  std::array<double, 15> hi{}, lo{};
+  const int from[15] = {2, 0, 1, 3, 1}, to[15] = {1, 2, 0, 2, 3};  // e0 = x2 - x1, e1, e2, e~1, e~2 (Fig. 1)
+  double largest = 0;
+  for (int k = 0; k < 5; ++k)
+    for (int c = 0; c < 3; ++c) {
+      bounded::two_sum(x[3 * from[k] + c], -x[3 * to[k] + c], hi[3 * k + c], lo[3 * k + c]);
+      largest = std::max(largest, std::fabs(hi[3 * k + c]));
+    }
+  if (largest == 0) return d;
+  // Scale by 2^-E so that the largest component lies in [1/2, 1): outputs then scale back exactly
+  // (grad by 2^-E, Hess by 2^-2E; theta does not change). A part the scaling would round: not here.
+  const int E = std::ilogb(largest) + 1;
+  Edges<Bounded> e;
+  std::array<V3<Bounded>*, 5> edge = {&e.e0, &e.e1, &e.e2, &e.et1, &e.et2};
+  for (int k = 0; k < 15; ++k) {
+    const double h = std::ldexp(hi[k], -E), l = std::ldexp(lo[k], -E);
+    if (std::ldexp(h, E) != hi[k] || std::ldexp(l, E) != lo[k]) return d;
+    (*edge[k / 3])[k % 3] = Bounded(h, l, 0);
+  }
+  const V3<Bounded> N = upper_normal(e), Nt = lower_normal(e);
+  Form<Bounded> f;
+  f.nn = form::dot(N, N);
+  f.tt = form::dot(Nt, Nt);
+  if (!(lower(f.nn) > 0 && lower(f.tt) > 0)) return d;  // possibly degenerate: the exact stage decides
+  fill_form(e, N, Nt, f, true);
+  if (!(lower(f.s) > 0 && lower(f.g_den) > 0 && lower(f.h_den) > 0)) return d;
+  const Bounded l0 = root(f.s);
+  const Bounded g_scale = f.g_den * l0, h_scale = f.h_den * l0;
+  if (!(lower(g_scale) > 0 && lower(h_scale) > 0)) return d;
+  const Bounded g_inverse = reciprocal(g_scale), h_inverse = reciprocal(h_scale);
+  auto settle = [&d](int k, bool decided) {
+    d.decided[k] = decided;
+    d.count += decided;
+  };
+  for (int k = 0; k < 12; ++k) settle(1 + k, decide(f.g[k] * g_inverse, -E, d.value[1 + k]));
+  for (int p = 0; p < 12; ++p)  // the upper triangle, and its mirror (h is exactly symmetric: exact_form.hpp)
+    for (int q = p; q < 12; ++q) {
+      settle(13 + 12 * p + q, decide(f.h[12 * p + q] * h_inverse, -2 * E, d.value[13 + 12 * p + q]));
+      if (q != p) {
+        d.value[13 + 12 * q + p] = d.value[13 + 12 * p + q];
+        settle(13 + 12 * q + p, d.decided[13 + 12 * p + q]);
+      }
+    }
+
+  // theta = atan2(Y / l0, X) by t = tan(theta / 2) in the half-angle forms that do not cancel (eq. (12)):
+  // X >= 0: t = Y / (l0 (r + X)), else t = l0 (r - X) / Y, r = |N| |Nt| (both hold for any X; the
+  // choice only avoids cancellation). Y exactly 0 is theta = 0 (X > 0) or the branch cut, +pi rounded
+  // (X < 0; docs/contract.md).
+  if (f.Y.hi == 0 && f.Y.lo == 0 && f.Y.err == 0) {
+    d.value[0] = f.X.hi > 0 ? 0.0 : std::numbers::pi;
+    settle(0, lower(f.X) > 0);
+  } else if (lower(f.Y) > 0) {
+    const Bounded nt = f.nn * f.tt;
+    if (lower(nt) > 0) {
+      const Bounded r = root(nt);
+      const Bounded t = f.X.hi >= 0 ? f.Y / (l0 * (r + f.X)) : (l0 * (r - f.X)) / f.Y;
+      if (std::isfinite(t.hi) && lower(t) > 0) settle(0, decide(Bounded(2.0) * arctan(t), 0, d.value[0]));
+    }
+  }
+  return d;
+}
+
+}  // namespace hinge::oracle::detail
