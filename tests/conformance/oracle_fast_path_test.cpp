@@ -69,7 +69,7 @@ TEST(OracleFastPath, GivesTheIntervalPathsDoublesOnTheHardFamilies) {
   // Needles, short hinge edges, near-flat, near-folded, exactly folded and flat, offsets to 1e16, scales
   // 2^-500 to 2^500, combined (conformance.hpp): where the fast path's bounds are weakest.
   Tally tally;
-  for (const auto& c : conformance::hard_cases(20261204, 25)) {
+  for (const auto& c : conformance::hard_cases(20261204, 100)) {
     CertifiedTheta with, without;
     try {
       without = certified_theta_derivatives(c.x, without_fast_path());
@@ -81,7 +81,7 @@ TEST(OracleFastPath, GivesTheIntervalPathsDoublesOnTheHardFamilies) {
     EXPECT_TRUE(same_bits(with, without)) << c.id;
     tally.add(c.id.substr(0, c.id.find('/')), with.path);
   }
-  tally.print("paths of the hard families (25 draws each, seed 20261204):");
+  tally.print("paths of the hard families (100 draws each, seed 20261204):");
 }
 
 TEST(OracleFastPath, DecidesAlmostEveryWellShapedHingeAlone) {
