@@ -82,8 +82,10 @@ Action add_oracle(CLI::App& app) {
   cmd->add_option("--input", o->input, "Input JSON Lines file (default: standard input)");
   cmd->add_option("--output", o->output, "Output JSON Lines file (default: standard output)");
   cmd->add_flag("--report-precision", o->report_precision,
-                "Add to each line \"bits\" (working precision the certification needed), \"exact_bits\" (size of "
-                "the largest exact integer), \"ties\" (outputs exactly halfway between two doubles) and \"decided_exactly\" "
+                "Add to each line \"path\" (\"fast\": the double-double fast path decided every output; \"exact\": "
+                "the exact stage the rest; \"interval\": enclosures were needed), \"bits\" (working precision the "
+                "enclosures needed, 0 if none), \"exact_bits\" (size of the largest exact integer, 0 if the exact stage "
+                "did not run), \"ties\" (outputs exactly halfway between two doubles) and \"decided_exactly\" "
                 "(outputs whose enclosure straddled a midpoint, rounded by an exact integer comparison)");
   cmd->add_option("--start-bits", o->start_bits, "First working precision of the certification (bits)")
       ->capture_default_str()
@@ -93,8 +95,9 @@ Action add_oracle(CLI::App& app) {
       ->check(CLI::Range(53u, 1u << 20));
   add_mesh_options(cmd, o->mesh, false);
   cmd->footer(
-      "Every output is the double nearest to the exact value for the input doubles (ties to even), proved by\n"
-      "exact integer arithmetic and MPFI enclosures (oracle/README.md). An output not certified within --max-bits\n"
+      "Every output is the double nearest to the exact value for the input doubles (ties to even), proved by a\n"
+      "double-double evaluation with rigorous error bounds, or else exact integer arithmetic and MPFI enclosures\n"
+      "(oracle/README.md). An output not certified within --max-bits\n"
       "bits is flagged on its line: \"uncertified\": [{\"output\", \"enclosure\": [lower, upper]}].\n"
       "With --mesh: the certified energy, gradient and Hessian of a mesh (options as for hinge hessian).");
   return [o]() -> int {
