@@ -174,12 +174,17 @@ void prefetch_for_writing(const void* p, std::size_t bytes) {
 }
 
 // The same, writing grad theta and Hess theta straight into the caller's arrays where the outcome is the
-// common one (theta's sign decided by the filter, nothing rescaled, no rare path); elsewhere evaluate()
-// into a HingeDerivatives, copied. Hess theta is symmetric bit for bit (each block stored with its
+// common one (theta's sign decided by the filter, nothing rescaled, no rare path); elsewhere completed in a
+// HingeDerivatives, copied. Hess theta is symmetric bit for bit (each block stored with its
 // mirror), so its columns are its rows.
 void evaluate_into(const Kernels& kernels, const std::array<double, 12>& x, double& theta, double* grad, double* hess) {
   prefetch_for_writing(hess, 144 * sizeof(double));
   prefetch_for_writing(grad, 12 * sizeof(double));
+  // And the next hinge's slots, where a caller writes hinges in order into arrays (the C interface's
+  // usual caller: one hinge a call, slot i of each array): a prefetch never faults, and where the guess
+  // is wrong it costs only its own bandwidth.
+  prefetch_for_writing(hess + 144, 144 * sizeof(double));
+  prefetch_for_writing(grad + 12, 12 * sizeof(double));
   const std::array<double, 12>* xs[1] = {&x};
   const Destination outs[1] = {{grad, hess}};
   LanesOutcome o;
@@ -188,8 +193,10 @@ void evaluate_into(const Kernels& kernels, const std::array<double, 12>& x, doub
     theta = theta_of(o, o.sign);
     return;
   }
-  HingeDerivatives<double> d;
-  evaluate(kernels, x, true, d);
+  HingeDerivatives<double> d;  // completed from the same outcome: the vector work is not done twice
+  std::copy(grad, grad + 12, d.grad.data());
+  std::copy(hess, hess + 144, d.hess.data());
+  complete(kernels, x, true, d, o);
   theta = d.theta;
   std::copy(d.grad.data(), d.grad.data() + 12, grad);
   std::copy(d.hess.data(), d.hess.data() + 144, hess);
