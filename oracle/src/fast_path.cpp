@@ -6,9 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cstdint>
 #include <cmath>
-#include <limits>
+#include <cstdint>
 #include <numbers>
 
 #include "bounded.hpp"
@@ -108,7 +107,7 @@ FastDecisions fast_path(const std::array<double, 12>& x) {
     if (!std::isfinite(c) || std::fabs(c) > 0x1p1000) return d;
   // The edges exactly, as double-doubles (a difference of two doubles is a two_sum).
   std::array<double, 15> hi{}, lo{};
-  const int from[15] = {2, 0, 1, 3, 1}, to[15] = {1, 2, 0, 2, 3};  // e0 = x2 - x1, e1, e2, e~1, e~2 (Fig. 1)
+  const int from[5] = {2, 0, 1, 3, 1}, to[5] = {1, 2, 0, 2, 3};  // e0 = x2 - x1, e1, e2, e~1, e~2 (Fig. 1)
   double largest = 0;
   for (int k = 0; k < 5; ++k)
     for (int c = 0; c < 3; ++c) {

@@ -1,7 +1,11 @@
 // hinge/oracle/oracle.hpp: the certified oracle for one hinge. Every output is the double nearest to the
 // exact theta, grad theta (eq. (4)) and Hess theta (eqs. (5)-(6), errata applied) of the 12 input doubles
-// taken as exact, with a proof carried by interval arithmetic:
+// taken as exact, with a proof:
 //
+// 0. fast path (oracle/src/fast_path.cpp, proofs/oracle-fast-path.md): the exact form of exact.hpp in
+//    double-double arithmetic with a rigorous error bound on every quantity; an output whose whole
+//    interval rounds to one double is decided (almost every output of an ordinary hinge), the others go
+//    on to stages 1 and 2;
 // 1. exact stage (exact.hpp): edges, normals, dot and cross products in integers; validity checks, the
 //    sign of theta, and every exactly-zero output decided there, exactly;
 // 2. certification (Ziv's strategy): each output is enclosed by MPFI at `start_bits`, and the precision
