@@ -99,6 +99,19 @@ Bounded arctan(const Bounded& t) {
   return negative ? -r : r;
 }
 
+// The normal of a triangle with edges a + b + c = 0 (cyclic): a x b = b x c = c x a, exactly. The two
+// shortest edges meet at the largest angle, whose sine is the largest, so their cross product cancels
+// least: on a needle with one short edge (a spike, a short hinge edge) it does not cancel at all. Upper
+// triangle: (e0, e1, e2) gives N = (x1 - x0) x (x2 - x0); lower: (-e~1, -e0, -e~2) = (x2 - x3, x1 - x2,
+// x3 - x1) gives Nt = (x2 - x3) x (x1 - x3) (docs/contract.md).
+V3<Bounded> normal(const V3<Bounded>& a, const V3<Bounded>& b, const V3<Bounded>& c) {
+  auto length2 = [](const V3<Bounded>& v) { return v[0].hi * v[0].hi + v[1].hi * v[1].hi + v[2].hi * v[2].hi; };
+  const double la = length2(a), lb = length2(b), lc = length2(c);
+  if (la >= lb && la >= lc) return form::cross(b, c);  // a the longest
+  if (lb >= lc) return form::cross(c, a);              // b the longest
+  return form::cross(a, b);
+}
+
 }  // namespace
 
 FastDecisions fast_path(const std::array<double, 12>& x) {
@@ -125,7 +138,7 @@ FastDecisions fast_path(const std::array<double, 12>& x) {
     if (std::ldexp(h, E) != hi[k] || std::ldexp(l, E) != lo[k]) return d;
     (*edge[k / 3])[k % 3] = Bounded(h, l, 0);
   }
-  const V3<Bounded> N = upper_normal(e), Nt = lower_normal(e);
+  const V3<Bounded> N = normal(e.e0, e.e1, e.e2), Nt = normal(form::neg(e.et1), form::neg(e.e0), form::neg(e.et2));
   Form<Bounded> f;
   f.nn = form::dot(N, N);
   f.tt = form::dot(Nt, Nt);

@@ -22,6 +22,8 @@ cancellation.
 6. The arctangent's series: for |z| <= 1/128 the sum through z^17 differs from atan z by less than
    |z|^19 / 19 (mpmath at 1200 bits), and atan(a) = atan(c) + atan((a - c) / (1 + a c)) for c = k/64
    nearest to a in [0, 1].
+7. The normals: for a + b + c = 0, a x b = b x c = c x a exactly (rationals), so a triangle's normal may
+   be taken from any two of its edges in cyclic order; and |a x b| = |a| |b| sin of their angle.
 --falsify add-v   : drop u |v| from the addition's bound (the rounding of e + t)
 --falsify mul-lolo: drop |a.lo b.lo| from the product's bound (the term the product leaves out)
 """
@@ -189,6 +191,18 @@ def check_arctangent(rep, rng):
     rep.true("6. atan series through z^17 within |z|^19 / 19 for |z| <= 1/128; the table's addition formula", ok)
 
 
+def check_cyclic_normals(rep, rng):
+    def cross(u, v):
+        return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    ok = True
+    for _ in range(2000):
+        a = tuple(Q(rng.uniform(-1, 1)) for _ in range(3))
+        b = tuple(Q(rng.uniform(-1, 1)) for _ in range(3))
+        c = tuple(-x - y for x, y in zip(a, b))
+        ok &= cross(a, b) == cross(b, c) == cross(c, a)
+    rep.true("7. a + b + c = 0 gives a x b = b x c = c x a exactly (2000 rational triples)", ok)
+
+
 def main():
     args = hc.parse_args(__doc__, VARIANTS)
     rep = hc.Report("proofs.oracle-fast-path", "the fast path's rounding-error bounds, in exact rationals",
@@ -199,6 +213,7 @@ def main():
     check_residual_bounds(rep, rng)
     check_decision(rep, rng)
     check_arctangent(rep, rng)
+    check_cyclic_normals(rep, rng)
     rep.finish()
 
 
