@@ -175,6 +175,13 @@ std::string output_name(int k) {
 
 namespace {
 
+// The outputs in the order theta, grad[0..11], hess[0..143] (fast_path.hpp) into `out`.
+void set_outputs(const std::array<double, kOutputs>& value, CertifiedTheta& out) {
+  out.theta = value[0];
+  std::copy(value.begin() + 1, value.begin() + 13, out.grad.begin());
+  std::copy(value.begin() + 13, value.end(), out.hess.begin());
+}
+
 // Stages 1 and 2 for the outputs not yet `done` (the fast path's decisions, if any).
 CertifiedTheta certify_rest(const ExactHinge& e, const Options& options, std::array<bool, kOutputs> done,
                             std::array<double, kOutputs> value) {
@@ -240,9 +247,7 @@ CertifiedTheta certify_rest(const ExactHinge& e, const Options& options, std::ar
       break;
     }
   }
-  out.theta = value[0];
-  for (int k = 0; k < 12; ++k) out.grad[k] = value[1 + k];
-  for (int k = 0; k < 144; ++k) out.hess[k] = value[13 + k];
+  set_outputs(value, out);
   return out;
 }
 
@@ -256,9 +261,7 @@ CertifiedTheta certified_theta_derivatives(const std::array<double, 12>& x, cons
   if (fast.count < kOutputs) return certify_rest(exact_hinge(x, true), options, fast.decided, fast.value);
   CertifiedTheta out;
   out.path = Path::fast;
-  out.theta = fast.value[0];
-  std::copy(fast.value.begin() + 1, fast.value.begin() + 13, out.grad.begin());
-  std::copy(fast.value.begin() + 13, fast.value.end(), out.hess.begin());
+  set_outputs(fast.value, out);
   return out;
 }
 
