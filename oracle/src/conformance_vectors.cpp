@@ -65,7 +65,9 @@ void write_vectors(const std::filesystem::path& dir, const std::function<void(st
       reference::EnergyParameters p;
       p.model = reference::parse_model(energy);
       p.k = 1;
-      const CertifiedMesh c = certified_mesh(m.deformed, m.rest, t, p, reference::want_all);
+      Options enclosures;  // the vectors record the enclosures' working precision ("bits")
+      enclosures.fast_path = false;
+      const CertifiedMesh c = certified_mesh(m.deformed, m.rest, t, p, reference::want_all, enclosures);
       if (!c.uncertified.empty()) throw std::logic_error("conformance mesh " + m.name + " is not certified");
       const std::string stem = m.name + "." + energy;
       io::AtomicFile h((dir / "meshes" / (stem + ".mtx")).string());

@@ -9,12 +9,12 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 
 #include "bounded.hpp"
 #include "exact_form.hpp"
 
 namespace hinge::oracle::detail {
-namespace {
 
 using bounded::inflate;
 using bounded::lower;
@@ -45,6 +45,8 @@ bool decide(const Bounded& v, int scale, double& out) {
   out = std::bit_cast<double>((bits & ~exponent_field) | (static_cast<std::uint64_t>(e + scale + 1023) << 52));
   return true;
 }
+
+namespace {
 
 // What the arctangent needs, computed once with MPFR at 256 bits and rounded to double-doubles: atan(k/64)
 // for k = 0..64, pi/2, and 1/(2j + 1) for the series (bounded reciprocals). A double-double v = hi + lo
@@ -114,10 +116,20 @@ V3<Bounded> normal(const V3<Bounded>& a, const V3<Bounded>& b, const V3<Bounded>
 
 }  // namespace
 
-FastDecisions fast_path(const std::array<double, 12>& x) {
-  FastDecisions d;
+namespace {
+
+// The exact form of x in the bounded arithmetic, from its edges scaled by 2^-E; l0 = |e0| (scaled).
+struct Evaluated {
+  Form<Bounded> f;
+  Bounded l0;
+  int E = 0;
+};
+
+// Nothing when the hinge may be degenerate (the exact stage decides and gives the error) or lies outside
+// the range where the scaling is exact.
+std::optional<Evaluated> evaluate(const std::array<double, 12>& x, bool with_hessian) {
   for (double c : x)
-    if (!std::isfinite(c) || std::fabs(c) > 0x1p1000) return d;
+    if (!std::isfinite(c) || std::fabs(c) > 0x1p1000) return std::nullopt;
   // The edges exactly, as double-doubles (a difference of two doubles is a two_sum).
   std::array<double, 15> hi{}, lo{};
   const int from[5] = {2, 0, 1, 3, 1}, to[5] = {1, 2, 0, 2, 3};  // e0 = x2 - x1, e1, e2, e~1, e~2 (Fig. 1)
@@ -127,28 +139,58 @@ FastDecisions fast_path(const std::array<double, 12>& x) {
       bounded::two_sum(x[3 * from[k] + c], -x[3 * to[k] + c], hi[3 * k + c], lo[3 * k + c]);
       largest = std::max(largest, std::fabs(hi[3 * k + c]));
     }
-  if (largest == 0) return d;
+  if (largest == 0) return std::nullopt;
   // Scale by 2^-E so that the largest component lies in [1/2, 1): outputs then scale back exactly
   // (grad by 2^-E, Hess by 2^-2E; theta does not change). A part the scaling would round: not here.
-  const int E = std::ilogb(largest) + 1;
+  Evaluated v;
+  v.E = std::ilogb(largest) + 1;
   Edges<Bounded> e;
   std::array<V3<Bounded>*, 5> edge = {&e.e0, &e.e1, &e.e2, &e.et1, &e.et2};
   for (int k = 0; k < 15; ++k) {
-    const double h = std::ldexp(hi[k], -E), l = std::ldexp(lo[k], -E);
-    if (std::ldexp(h, E) != hi[k] || std::ldexp(l, E) != lo[k]) return d;
+    const double h = std::ldexp(hi[k], -v.E), l = std::ldexp(lo[k], -v.E);
+    if (std::ldexp(h, v.E) != hi[k] || std::ldexp(l, v.E) != lo[k]) return std::nullopt;
     (*edge[k / 3])[k % 3] = Bounded(h, l, 0);
   }
   const V3<Bounded> N = normal(e.e0, e.e1, e.e2), Nt = normal(form::neg(e.et1), form::neg(e.e0), form::neg(e.et2));
-  Form<Bounded> f;
+  Form<Bounded>& f = v.f;
   f.nn = form::dot(N, N);
   f.tt = form::dot(Nt, Nt);
-  if (!(lower(f.nn) > 0 && lower(f.tt) > 0)) return d;  // possibly degenerate: the exact stage decides
-  fill_form(e, N, Nt, f, true);
-  if (!(lower(f.s) > 0 && lower(f.g_den) > 0 && lower(f.h_den) > 0)) return d;
-  const Bounded l0 = root(f.s);
-  const Bounded g_scale = f.g_den * l0, h_scale = f.h_den * l0;
-  if (!(lower(g_scale) > 0 && lower(h_scale) > 0)) return d;
-  const Bounded g_inverse = reciprocal(g_scale), h_inverse = reciprocal(h_scale);
+  if (!(lower(f.nn) > 0 && lower(f.tt) > 0)) return std::nullopt;  // possibly degenerate
+  fill_form(e, N, Nt, f, with_hessian);
+  if (!(lower(f.s) > 0)) return std::nullopt;
+  v.l0 = root(f.s);
+  return v;
+}
+
+// t = tan(theta / 2) and theta = atan2(Y / l0, X) where Y is certainly not zero, by the half-angle forms
+// that do not cancel (eq. (12)): X >= 0: t = Y / (l0 (r + X)), else t = l0 (r - X) / Y, r = |N| |Nt| (both
+// hold for any X; the choice only avoids cancellation); theta = 2 atan(t). Both undefined() elsewhere.
+void angle(const Evaluated& v, Bounded& theta, Bounded& t) {
+  const Form<Bounded>& f = v.f;
+  theta = t = undefined();
+  if (!(lower(f.Y) > 0)) return;
+  const Bounded r = root(f.nn * f.tt);
+  t = f.X.hi >= 0 ? f.Y / (v.l0 * (r + f.X)) : (v.l0 * (r - f.X)) / f.Y;
+  if (std::isfinite(t.hi) && lower(t) > 0) theta = Bounded(2.0) * arctan(t);
+}
+
+// v 2^p; a part that leaves the range of double is undefined(), one that underflows adds its loss.
+Bounded scaled(const Bounded& v, int p) {
+  const Bounded s(std::ldexp(v.hi, p), std::ldexp(v.lo, p), std::ldexp(v.err, p) * inflate + 0x1p-1074);
+  if (!(std::isfinite(s.hi) && std::isfinite(s.lo) && std::isfinite(s.err))) return undefined();
+  if (v.hi == 0 && v.lo == 0 && v.err == 0) return v;  // an exact zero stays one
+  return s;
+}
+
+}  // namespace
+
+FastDecisions fast_path(const std::array<double, 12>& x) {
+  FastDecisions d;
+  const std::optional<Evaluated> v = evaluate(x, true);
+  if (!v) return d;
+  const Form<Bounded>& f = v->f;
+  const int E = v->E;
+  const Bounded g_inverse = reciprocal(f.g_den * v->l0), h_inverse = reciprocal(f.h_den * v->l0);
   auto settle = [&d](int k, bool decided) {
     d.decided[k] = decided;
     d.count += decided;
@@ -162,23 +204,36 @@ FastDecisions fast_path(const std::array<double, 12>& x) {
         settle(13 + 12 * q + p, d.decided[13 + 12 * p + q]);
       }
     }
-
-  // theta = atan2(Y / l0, X) by t = tan(theta / 2) in the half-angle forms that do not cancel (eq. (12)):
-  // X >= 0: t = Y / (l0 (r + X)), else t = l0 (r - X) / Y, r = |N| |Nt| (both hold for any X; the
-  // choice only avoids cancellation). Y exactly 0 is theta = 0 (X > 0) or the branch cut, +pi rounded
-  // (X < 0; docs/contract.md).
+  // theta; Y exactly 0 is theta = 0 (X > 0) or the branch cut, +pi rounded (X < 0; docs/contract.md).
   if (f.Y.hi == 0 && f.Y.lo == 0 && f.Y.err == 0) {
     d.value[0] = f.X.hi > 0 ? 0.0 : std::numbers::pi;
     settle(0, lower(f.X) > 0);
-  } else if (lower(f.Y) > 0) {
-    const Bounded nt = f.nn * f.tt;
-    if (lower(nt) > 0) {
-      const Bounded r = root(nt);
-      const Bounded t = f.X.hi >= 0 ? f.Y / (l0 * (r + f.X)) : (l0 * (r - f.X)) / f.Y;
-      if (std::isfinite(t.hi) && lower(t) > 0) settle(0, decide(Bounded(2.0) * arctan(t), 0, d.value[0]));
-    }
+  } else {
+    Bounded theta, t;
+    angle(*v, theta, t);
+    settle(0, decide(theta, 0, d.value[0]));
   }
   return d;
+}
+
+std::optional<BoundedHinge> bounded_hinge(const std::array<double, 12>& x, bool with_derivatives) {
+  const std::optional<Evaluated> v = evaluate(x, with_derivatives);
+  if (!v) return std::nullopt;
+  const Form<Bounded>& f = v->f;
+  BoundedHinge b;
+  if (f.Y.hi == 0 && f.Y.lo == 0 && f.Y.err == 0 && f.X.hi > 0 && lower(f.X) > 0) {
+    b.theta = b.tan_half = Bounded(0.0);  // exactly flat
+  } else {
+    angle(*v, b.theta, b.tan_half);
+    if (!std::isfinite(b.theta.hi)) return std::nullopt;  // the branch cut, or Y not certainly nonzero
+  }
+  // Algorithm 1: a = 3 |e_bar|^2 / A_bar = 6 s / (|N| + |Nt|): the scaling cancels.
+  b.a = Bounded(6.0) * (f.s / (root(f.nn) + root(f.tt)));
+  if (!with_derivatives) return b;
+  const Bounded g_inverse = reciprocal(f.g_den * v->l0), h_inverse = reciprocal(f.h_den * v->l0);
+  for (int k = 0; k < 12; ++k) b.grad[k] = scaled(f.g[k] * g_inverse, -v->E);
+  for (int k = 0; k < 144; ++k) b.hess[k] = scaled(f.h[k] * h_inverse, -2 * v->E);
+  return b;
 }
 
 }  // namespace hinge::oracle::detail

@@ -11,6 +11,8 @@
 #include "hinge/reference/errors.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"
+#include "mesh_fast_path.hpp"
+#include "mesh_scatter.hpp"
 
 namespace hinge::oracle {
 namespace {
@@ -79,6 +81,8 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
                              const reference::EnergyParameters& parameters, unsigned request, const Options& options) {
   check_same_mesh(deformed, topology, "deformed");
   check_same_mesh(rest, topology, "rest");
+  if (options.fast_path)
+    if (std::optional<CertifiedMesh> fast = detail::fast_mesh(deformed, rest, topology, parameters, request)) return *fast;
   const bool want_grad = request & reference::want_gradient, want_hess = request & reference::want_hessian;
   const Model model = parameters.model;
   const auto hinge_count = static_cast<Index>(topology.hinges.size());
@@ -157,26 +161,7 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
         for (int row = 0; row < 12; ++row)
           for (int col = 0; col < 12; ++col) squares += square(midpoint(local(row, col)));
         out.hessian_contributions += std::sqrt(squares);
-        for (int a4 = 0; a4 < 4; ++a4)
-          for (int b4 = a4; b4 < 4; ++b4) {  // the 10 upper blocks, as hinge::reference::assemble
-            const Index va = hinge.x[a4], vb = hinge.x[b4];
-            std::array<Interval, 9> B;
-            for (int rr = 0; rr < 3; ++rr)
-              for (int cc = 0; cc < 3; ++cc) {
-                B[3 * rr + cc] = local(3 * a4 + rr, 3 * b4 + cc);
-                if (a4 != b4 && va == vb) B[3 * rr + cc] += local(3 * b4 + rr, 3 * a4 + cc);  // one global vertex
-              }
-            const bool flip = va > vb;
-            const Index row = flip ? vb : va, col = flip ? va : vb;
-            for (int rr = 0; rr < 3; ++rr)
-              for (int cc = 0; cc < 3; ++cc) {
-                if (row == col && rr > cc) continue;
-                const std::pair<Eigen::Index, Eigen::Index> key{3 * row + rr, 3 * col + cc};
-                const Interval& v = flip ? B[3 * cc + rr] : B[3 * rr + cc];
-                auto [it, inserted] = hessian.try_emplace(key, v);
-                if (!inserted) it->second += v;
-              }
-          }
+        detail::scatter_hessian(hinge, local, hessian);
       });
     }
 

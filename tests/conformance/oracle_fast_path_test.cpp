@@ -1,19 +1,20 @@
-// The oracle's fast path (oracle/src/fast_path.cpp, proofs/oracle-fast-path.md): it gives the doubles
-// of the exact stage and the enclosures, bit for bit, on every conformance input, on the hard families and
+// The oracle's fast path (oracle/src/fast_path.cpp, mesh_fast_path.cpp, proofs/oracle-fast-path.md): it
+// gives the doubles of the exact stage and the enclosures, bit for bit (for one hinge and for a mesh), on every conformance input, on the hard families and
 // on the committed worked examples; it decides almost every well-shaped hinge alone; and what it cannot
 // decide (exact zeros, the branch cut, degenerate hinges) goes on to the stages that can.
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstring>
 #include <map>
 #include <numbers>
 #include <string>
 
 #include "hinge/oracle/conformance.hpp"
+#include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
 #include "hinge/reference/errors.hpp"
 #include "hinge/reference/samples.hpp"
+#include "support/same_results.hpp"
 
 namespace hinge::oracle {
 namespace {
@@ -24,24 +25,6 @@ Options without_fast_path() {
   Options o;
   o.fast_path = false;
   return o;
-}
-
-// Bit for bit (so +0 and -0 differ), every output.
-::testing::AssertionResult same_bits(const CertifiedTheta& a, const CertifiedTheta& b) {
-  auto bits = [](double v) {
-    std::uint64_t u;
-    std::memcpy(&u, &v, sizeof u);
-    return u;
-  };
-  if (bits(a.theta) != bits(b.theta)) return ::testing::AssertionFailure() << "theta " << a.theta << " vs " << b.theta;
-  for (int k = 0; k < 12; ++k)
-    if (bits(a.grad[k]) != bits(b.grad[k]))
-      return ::testing::AssertionFailure() << "grad[" << k << "] " << a.grad[k] << " vs " << b.grad[k];
-  for (int k = 0; k < 144; ++k)
-    if (bits(a.hess[k]) != bits(b.hess[k]))
-      return ::testing::AssertionFailure() << "hess[" << k << "] " << a.hess[k] << " vs " << b.hess[k];
-  if (!a.uncertified.empty() || !b.uncertified.empty()) return ::testing::AssertionFailure() << "uncertified outputs";
-  return ::testing::AssertionSuccess();
 }
 
 // Per category, how many hinges each path ended on (printed: oracle/README.md quotes these tables).
@@ -58,7 +41,7 @@ TEST(OracleFastPath, GivesTheIntervalPathsDoublesOnEveryConformanceInput) {
   Tally tally;
   for (const auto& c : conformance::inputs()) {
     const CertifiedTheta with = certified_theta_derivatives(c.x), without = certified_theta_derivatives(c.x, without_fast_path());
-    EXPECT_TRUE(same_bits(with, without)) << c.id;
+    EXPECT_EQ("", test::first_difference(with, without)) << c.id;
     tally.add(c.category, with.path);
   }
   tally.print("paths of the conformance inputs:");
@@ -78,7 +61,7 @@ TEST(OracleFastPath, GivesTheIntervalPathsDoublesOnTheHardFamilies) {
       continue;
     }
     with = certified_theta_derivatives(c.x);
-    EXPECT_TRUE(same_bits(with, without)) << c.id;
+    EXPECT_EQ("", test::first_difference(with, without)) << c.id;
     tally.add(c.id.substr(0, c.id.find('/')), with.path);
   }
   tally.print("paths of the hard families (100 draws each, seed 20261204):");
@@ -102,7 +85,7 @@ TEST(OracleFastPath, DecidesZerosOfExactArithmeticItself) {
   for (const X12& x : {axis, folded}) {
     const CertifiedTheta a = certified_theta_derivatives(x);
     EXPECT_EQ(a.path, Path::fast);
-    EXPECT_TRUE(same_bits(a, certified_theta_derivatives(x, without_fast_path())));
+    EXPECT_EQ("", test::first_difference(a, certified_theta_derivatives(x, without_fast_path())));
   }
   EXPECT_EQ(certified_theta_derivatives(folded).theta, std::numbers::pi);
 }
@@ -116,7 +99,7 @@ TEST(OracleFastPath, LeavesZerosByCancellationToTheExactStage) {
   for (const X12& x : {flat, folded}) {
     const CertifiedTheta a = certified_theta_derivatives(x);
     EXPECT_NE(a.path, Path::fast);
-    EXPECT_TRUE(same_bits(a, certified_theta_derivatives(x, without_fast_path())));
+    EXPECT_EQ("", test::first_difference(a, certified_theta_derivatives(x, without_fast_path())));
   }
   EXPECT_EQ(certified_theta_derivatives(flat).theta, 0.0);
   EXPECT_EQ(certified_theta_derivatives(folded).theta, std::numbers::pi);
@@ -128,6 +111,47 @@ TEST(OracleFastPath, LeavesDegenerateAndNonFiniteHingesToTheExactStagesErrors) {
   X12 nan{0, 1, 0, 0, 0, 0, 1, 0, 0, 0.25, -1, 0.5};
   nan[4] = std::nan("");
   EXPECT_THROW(certified_theta_derivatives(nan), InputError);
+}
+
+TEST(OracleFastPath, MeshFastPathGivesTheEnclosuresDoubles) {
+  struct Case {
+    std::string name;
+    Mesh deformed, rest;
+  };
+  std::vector<Case> cases;
+  for (const auto& m : conformance::meshes()) cases.push_back({m.name, m.deformed, m.rest});
+  cases.push_back({"cloth 11^2", cloth(11, 2), cloth(11, 1)});
+  int fast = 0;
+  for (const Case& m : cases) {
+    const Topology t = build_topology(m.deformed);
+    for (reference::Model model :
+         {reference::Model::shells, reference::Model::tan, reference::Model::viscoelastic, reference::Model::willmore}) {
+      reference::EnergyParameters p;
+      p.model = model;
+      p.k = 0.75;
+      p.k_d_over_dt = 0.125;
+      const CertifiedMesh with = certified_mesh(m.deformed, m.rest, t, p);
+      const CertifiedMesh without = certified_mesh(m.deformed, m.rest, t, p, reference::want_all, without_fast_path());
+      EXPECT_EQ("", test::first_difference(with, without)) << m.name << " " << reference::model_name(model);
+      EXPECT_GT(without.bits, 0u);
+      fast += with.bits == 0;
+      if (model == reference::Model::willmore) {
+        EXPECT_GT(with.bits, 0u);  // sines: not in the fast path
+      }
+    }
+  }
+  std::printf("mesh fast path: %d of %zu meshes and energies decided alone\n", fast, 4 * cases.size());
+  EXPECT_GE(fast, 3);  // the cloth's three energies at least
+}
+
+TEST(OracleFastPath, MeshAtRestGoesToTheExactStage) {
+  // theta == theta_bar on every hinge: psi' is exactly zero only by the exact test.
+  const Mesh m = cloth(11, 2);
+  const Topology t = build_topology(m);
+  const CertifiedMesh c = certified_mesh(m, m, t, {});
+  EXPECT_GT(c.bits, 0u);
+  EXPECT_EQ(c.rounded.energy, 0.0);
+  EXPECT_EQ("", test::first_difference(c, certified_mesh(m, m, t, {}, reference::want_all, without_fast_path())));
 }
 
 TEST(OracleFastPath, ReportsWhatItDidNotRun) {

@@ -1,11 +1,15 @@
-// Properties of the certified oracle's fast path (oracle/src/fast_path.cpp, proofs/oracle-fast-path.md):
-// on any hinge the generators make (well-shaped, the hard families, exactly flat and folded, scales
-// 2^-300 to 2^300) it gives the exact stage's and the enclosures' doubles bit for bit, and on an invalid
-// hinge the same error. Runs in the sanitizer build too (label properties).
-#include <cstring>
+// Properties of the certified oracle's fast path (oracle/src/fast_path.cpp, mesh_fast_path.cpp,
+// proofs/oracle-fast-path.md): on any hinge the generators make (well-shaped, the hard families, exactly
+// flat and folded, scales 2^-300 to 2^300), and on any mesh with a random rest state, it gives the exact
+// stage's and the enclosures' doubles bit for bit, and on an invalid hinge the same error. No tolerance:
+// a decided output is the correctly rounded one. Runs in the sanitizer build too (label properties).
+#include <functional>
+#include <string>
 
+#include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
-#include "property_support.hpp"
+#include "mesh_support.hpp"
+#include "support/same_results.hpp"
 
 namespace hinge::test {
 namespace {
@@ -16,55 +20,58 @@ oracle::Options enclosures_only() {
   return o;
 }
 
-std::uint64_t bits(double v) {
-  std::uint64_t u;
-  std::memcpy(&u, &v, sizeof u);
-  return u;
-}
-
-// The first output where the two differ (-1: none); theta is output 0, grad 1..12, hess 13..156.
-int first_difference(const oracle::CertifiedTheta& a, const oracle::CertifiedTheta& b) {
-  if (bits(a.theta) != bits(b.theta)) return 0;
-  for (int k = 0; k < 12; ++k)
-    if (bits(a.grad[k]) != bits(b.grad[k])) return 1 + k;
-  for (int k = 0; k < 144; ++k)
-    if (bits(a.hess[k]) != bits(b.hess[k])) return 13 + k;
-  return -1;
-}
-
-void gives_the_enclosures_doubles(const HingeCase& h) {
-  oracle::CertifiedTheta slow, fast;
+// Runs f with and without the fast path; the same results (or the same error message) expected.
+template <class F>
+void same_either_way(F f, const std::string& property, const std::function<void(Report&)>& describe) {
+  decltype(f(oracle::Options{})) slow, fast;
   std::string slow_error, fast_error;
   try {
-    slow = oracle::certified_theta_derivatives(h.x, enclosures_only());
+    slow = f(enclosures_only());
   } catch (const std::exception& e) {
     slow_error = e.what();
   }
   try {
-    fast = oracle::certified_theta_derivatives(h.x);
+    fast = f(oracle::Options{});
   } catch (const std::exception& e) {
     fast_error = e.what();
   }
   RC_ASSERT(fast_error == slow_error);
   if (!slow_error.empty()) return;
-  const int k = first_difference(fast, slow);
-  if (k >= 0) {
-    Report rep("oracle: the fast path gives the enclosures' doubles", h.x);
-    rep.line("family " + h.family + " (" + h.recipe + "), path " + oracle::path_name(fast.path) + ", output " +
-             std::to_string(k) + " differs");
+  const std::string difference = first_difference(fast, slow);
+  if (!difference.empty()) {
+    Report rep(property);
+    describe(rep);
+    rep.line(difference + " differs");
     RC_FAIL(rep.finish(INFINITY, 0, "a decided output is the correctly rounded one"));
   }
 }
 
-RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnAnyHinge, ()) {
-  gives_the_enclosures_doubles(*gen::any_hinge(wide_scales));
+void hinge_same_either_way(const HingeCase& h) {
+  same_either_way([&](const oracle::Options& o) { return oracle::certified_theta_derivatives(h.x, o); },
+                  "oracle: the fast path gives the enclosures' doubles",
+                  [&](Report& rep) { rep.line("family " + h.family + " (" + h.recipe + "), input " + describe(h.x)); });
 }
+
+RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnAnyHinge, ()) { hinge_same_either_way(*gen::any_hinge(wide_scales)); }
 
 RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnFlatAndFoldedHinges, ()) {
-  gives_the_enclosures_doubles(*gen::coplanar_hinge(*rc::gen::arbitrary<bool>()));
+  hinge_same_either_way(*gen::coplanar_hinge(*rc::gen::arbitrary<bool>()));
 }
 
-RC_GTEST_PROP(OracleFastPath, GivesTheSameErrorOnInvalidHinges, ()) { gives_the_enclosures_doubles(*gen::invalid_hinge()); }
+RC_GTEST_PROP(OracleFastPath, GivesTheSameErrorOnInvalidHinges, ()) { hinge_same_either_way(*gen::invalid_hinge()); }
+
+RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnAnyMesh, ()) {
+  const MeshCase mc = *gen::mesh();
+  reference::EnergyParameters p;
+  p.model = *rc::gen::element(reference::Model::shells, reference::Model::tan, reference::Model::viscoelastic);
+  p.k = *gen::uniform(0.5, 2);
+  p.k_d_over_dt = 0.25;
+  const Topology t = build_topology(mc.deformed);
+  same_either_way([&](const oracle::Options& o) { return oracle::certified_mesh(mc.deformed, mc.rest, t, p, reference::want_all, o); },
+                  "oracle: the mesh fast path gives the enclosures' doubles", [&](Report& rep) {
+                    rep.line(mc.family + " mesh, " + std::string(reference::model_name(p.model)));
+                  });
+}
 
 }  // namespace
 }  // namespace hinge::test

@@ -1,7 +1,9 @@
 // hinge/oracle/mesh.hpp: the certified oracle for a whole mesh (hinge oracle --mesh). The energy
 // E = sum_i psi_i (eq. (1)), its gradient (eq. (2)) and Hessian (eq. (3)) are enclosed hinge by hinge from the
 // exact form of each hinge (exact.hpp), summed in interval arithmetic, and each global entry rounded to
-// the nearest double by Ziv's strategy, as for one hinge (oracle.hpp).
+// the nearest double by Ziv's strategy, as for one hinge (oracle.hpp). First (Options::fast_path, the
+// default), the same sums in the fast path's bounded double-double: when every output is decided there,
+// that is the result (the same doubles), else the whole mesh goes the way just described.
 //
 // Exact zeros: theta == theta_bar is decided exactly (then psi' = 0 exactly for shells and tan, and
 // psi = 0), exactly zero gradient and Hessian entries of theta stay exact, and an entry with no nonzero
@@ -23,10 +25,11 @@ namespace hinge::oracle {
 
 struct CertifiedMesh {
   reference::RoundedMesh rounded;  // energy, gradient (3n, if requested), Hessian upper triangle (if requested)
-  unsigned bits = 0;               // the working precision the certification needed
+  unsigned bits = 0;               // the working precision the enclosures needed (0: the fast path decided all)
   std::vector<Uncertified> uncertified;  // outputs named "energy", "gradient[i]", "hessian(i,j)" (0-based)
   // sum over hinges of ||g_h||_2 and ||H_h||_F, the hinges' own energy gradients and Hessians (for the
-  // summation condition numbers of hinge conform); approximate, from the enclosures' midpoints.
+  // summation condition numbers of hinge conform); approximate, from the enclosures' midpoints (or the
+  // fast path's values).
   double gradient_contributions = 0, hessian_contributions = 0;
 };
 

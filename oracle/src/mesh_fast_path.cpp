@@ -1,0 +1,118 @@
+// The mesh oracle's fast path (mesh_fast_path.hpp). The sums, the pattern and the order are mesh.cpp's:
+// only the arithmetic differs (bounded double-double instead of MPFI), and an output is kept only when
+// decided, so the doubles are the same.
+#include "mesh_fast_path.hpp"
+
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "fast_path.hpp"
+#include "mesh_scatter.hpp"
+#include "hinge/reference/hinge_checks.hpp"
+
+namespace hinge::oracle::detail {
+namespace {
+
+using reference::Model;
+
+struct PsiBounded {
+  Bounded value, d1, d2;  // psi, psi', psi''
+};
+
+bool exact_zero(const Bounded& v) { return v.hi == 0 && v.lo == 0 && v.err == 0; }
+
+// psi, psi', psi'' of hinge_energy.hpp's models with sums and products only (mesh.cpp's psi, the same
+// formulas); nothing when theta - theta_bar (shells) or t - t_bar (tan) may be zero without being an
+// exact zero: then theta == theta_bar must be decided exactly.
+std::optional<PsiBounded> psi(Model model, double k, double kd, const Bounded& a, const BoundedHinge& h,
+                              const BoundedHinge& rest) {
+  const Bounded two(2.0);
+  switch (model) {
+    case Model::shells: {  // psi = k a (theta - theta_bar)^2
+      const Bounded d = h.theta - rest.theta;
+      if (!exact_zero(d) && !(bounded::lower(d) > 0)) return std::nullopt;
+      const Bounded ka = Bounded(k) * a;
+      return PsiBounded{ka * d * d, two * ka * d, two * ka};
+    }
+    case Model::tan:
+    case Model::viscoelastic: {  // eq. (8): psi = k a (phi - phi_bar)^2, phi = 2 t, t = tan(theta / 2)
+      const Bounded& t = h.tan_half;
+      const Bounded elastic = two * t - two * rest.tan_half;
+      if (!exact_zero(elastic) && !(bounded::lower(elastic) > 0)) return std::nullopt;
+      const Bounded dphi = Bounded(1.0) + t * t, d2phi = t * dphi;
+      const Bounded stiffness = model == Model::viscoelastic ? Bounded(k) + Bounded(kd) : Bounded(k);
+      const Bounded force = stiffness * elastic;
+      return PsiBounded{stiffness * a * elastic * elastic, two * a * force * dphi,
+                        two * a * (stiffness * dphi * dphi + force * d2phi)};
+    }
+    default:
+      return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::optional<CertifiedMesh> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
+                                       const reference::EnergyParameters& parameters, unsigned request) {
+  const Model model = parameters.model;
+  if (model != Model::shells && model != Model::tan && model != Model::viscoelastic) return std::nullopt;
+  const bool want_grad = request & reference::want_gradient, want_hess = request & reference::want_hessian;
+  const Eigen::Index n = 3 * static_cast<Eigen::Index>(topology.vertex_count);
+  Bounded energy;
+  std::vector<Bounded> gradient(want_grad ? static_cast<std::size_t>(n) : 0);
+  std::map<std::pair<Eigen::Index, Eigen::Index>, Bounded> hessian;  // upper triangle (row <= col)
+  CertifiedMesh out;
+  for (std::size_t i = 0; i < topology.hinges.size(); ++i) {
+    const Hinge& hinge = topology.hinges[i];
+    const std::optional<BoundedHinge> r = bounded_hinge(hinge_coordinates(rest, hinge), false);
+    const std::optional<BoundedHinge> h = bounded_hinge(hinge_coordinates(deformed, hinge), want_grad || want_hess);
+    if (!r || !h) return std::nullopt;
+    const std::optional<PsiBounded> p = psi(model, parameters.k, parameters.k_d_over_dt, r->a, *h, *r);
+    if (!p) return std::nullopt;
+    energy = energy + p->value;  // eq. (1)
+    if (want_grad) {
+      double squares = 0;
+      for (int c = 0; c < 12; ++c) {
+        const Bounded v = p->d1 * h->grad[c];
+        squares += v.hi * v.hi;  // the value rounded to double, as mesh.cpp's midpoints
+      }
+      out.gradient_contributions += std::sqrt(squares);
+      for (int a4 = 0; a4 < 4; ++a4)
+        for (int c = 0; c < 3; ++c) {
+          Bounded& g = gradient[static_cast<std::size_t>(3 * hinge.x[a4] + c)];
+          g = g + p->d1 * h->grad[3 * a4 + c];  // eq. (2)
+        }
+    }
+    if (!want_hess) continue;
+    auto local = [&](int row, int col) {  // eq. (3): psi' H + psi'' g g^T
+      return p->d1 * h->hess[12 * row + col] + p->d2 * h->grad[row] * h->grad[col];
+    };
+    double squares = 0;
+    for (int row = 0; row < 12; ++row)
+      for (int col = 0; col < 12; ++col) {
+        const Bounded v = local(row, col);
+        squares += v.hi * v.hi;  // the value rounded to double, as mesh.cpp's midpoints
+      }
+    out.hessian_contributions += std::sqrt(squares);
+    scatter_hessian(hinge, local, hessian);
+  }
+  if (!decide(energy, 0, out.rounded.energy)) return std::nullopt;
+  out.rounded.gradient.assign(gradient.size(), 0.0);
+  for (std::size_t c = 0; c < gradient.size(); ++c)
+    if (!decide(gradient[c], 0, out.rounded.gradient[c])) return std::nullopt;
+  if (want_hess) {
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(hessian.size());
+    for (const auto& [key, v] : hessian) {
+      double value = 0;
+      if (!decide(v, 0, value)) return std::nullopt;
+      triplets.emplace_back(key.first, key.second, value);
+    }
+    out.rounded.hessian.resize(n, n);
+    out.rounded.hessian.setFromTriplets(triplets.begin(), triplets.end());
+  }
+  return out;
+}
+
+}  // namespace hinge::oracle::detail

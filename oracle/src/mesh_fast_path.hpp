@@ -1,0 +1,18 @@
+// oracle/src/mesh_fast_path.hpp: the mesh oracle's fast path (private to hinge::oracle): every hinge's
+// theta, grad theta and Hess theta in the bounded double-double of the hinge oracle's fast path
+// (fast_path.hpp), eqs. (1)-(3) summed in the same arithmetic, every global entry decided when its whole
+// interval rounds to one double. All or nothing: any output it cannot decide, any hinge it cannot bound
+// (degenerate, out of range, theta == theta_bar not excluded, as at rest), and the energies with sines
+// (willmore, bridson) leave the whole mesh to the exact stage and enclosures (mesh.cpp).
+#pragma once
+
+#include <optional>
+
+#include "hinge/oracle/mesh.hpp"
+
+namespace hinge::oracle::detail {
+
+std::optional<CertifiedMesh> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
+                                       const reference::EnergyParameters& parameters, unsigned request);
+
+}  // namespace hinge::oracle::detail
