@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "fast_path.hpp"
+#include "hinge/oracle/exact.hpp"
+#include "hinge_intervals.hpp"
 #include "mesh_scatter.hpp"
 #include "hinge/reference/hinge_checks.hpp"
 
@@ -22,33 +24,38 @@ struct PsiBounded {
 
 bool exact_zero(const Bounded& v) { return v.hi == 0 && v.lo == 0 && v.err == 0; }
 
+// theta - theta_bar (shells) or t - t_bar (tan): the quantity psi' vanishes with.
+Bounded elastic(Model model, const BoundedHinge& h, const BoundedHinge& rest) {
+  return model == Model::shells ? h.theta - rest.theta : Bounded(2.0) * h.tan_half - Bounded(2.0) * rest.tan_half;
+}
+
 // psi, psi', psi'' of hinge_energy.hpp's models with sums and products only (mesh.cpp's psi, the same
-// formulas); nothing when theta - theta_bar (shells) or t - t_bar (tan) may be zero without being an
-// exact zero: then theta == theta_bar must be decided exactly.
-std::optional<PsiBounded> psi(Model model, double k, double kd, const Bounded& a, const BoundedHinge& h,
-                              const BoundedHinge& rest) {
+// formulas); `equal`: theta == theta_bar exactly (then the difference is an exact zero).
+PsiBounded psi(Model model, double k, double kd, const Bounded& a, const BoundedHinge& h, const BoundedHinge& rest,
+               bool equal) {
   const Bounded two(2.0);
-  switch (model) {
-    case Model::shells: {  // psi = k a (theta - theta_bar)^2
-      const Bounded d = h.theta - rest.theta;
-      if (!exact_zero(d) && !(bounded::lower(d) > 0)) return std::nullopt;
-      const Bounded ka = Bounded(k) * a;
-      return PsiBounded{ka * d * d, two * ka * d, two * ka};
-    }
-    case Model::tan:
-    case Model::viscoelastic: {  // eq. (8): psi = k a (phi - phi_bar)^2, phi = 2 t, t = tan(theta / 2)
-      const Bounded& t = h.tan_half;
-      const Bounded elastic = two * t - two * rest.tan_half;
-      if (!exact_zero(elastic) && !(bounded::lower(elastic) > 0)) return std::nullopt;
-      const Bounded dphi = Bounded(1.0) + t * t, d2phi = t * dphi;
-      const Bounded stiffness = model == Model::viscoelastic ? Bounded(k) + Bounded(kd) : Bounded(k);
-      const Bounded force = stiffness * elastic;
-      return PsiBounded{stiffness * a * elastic * elastic, two * a * force * dphi,
-                        two * a * (stiffness * dphi * dphi + force * d2phi)};
-    }
-    default:
-      return std::nullopt;
+  const Bounded d = equal ? Bounded(0.0) : elastic(model, h, rest);
+  if (model == Model::shells) {  // psi = k a (theta - theta_bar)^2
+    const Bounded ka = Bounded(k) * a;
+    return {ka * d * d, two * ka * d, two * ka};
   }
+  // tan, viscoelastic: eq. (8), psi = k a (phi - phi_bar)^2, phi = 2 t, t = tan(theta / 2)
+  const Bounded& t = h.tan_half;
+  const Bounded dphi = Bounded(1.0) + t * t, d2phi = t * dphi;
+  const Bounded stiffness = model == Model::viscoelastic ? Bounded(k) + Bounded(kd) : Bounded(k);
+  const Bounded force = stiffness * d;
+  return {stiffness * a * d * d, two * a * force * dphi, two * a * (stiffness * dphi * dphi + force * d2phi)};
+}
+
+// Whether theta == theta_bar, when the bounds cannot tell (every hinge of a mesh at rest): decided in
+// integers (same_angle), as mesh.cpp decides it; nothing when they differ by less than the bounds see.
+std::optional<bool> equal_angles(Model model, const BoundedHinge& h, const BoundedHinge& rest,
+                                 const std::array<double, 12>& x, const std::array<double, 12>& x_rest) {
+  const Bounded d = elastic(model, h, rest);
+  if (exact_zero(d)) return true;
+  if (bounded::lower(d) > 0) return false;
+  if (same_angle(exact_hinge(x, false), exact_hinge(x_rest, false))) return true;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -65,28 +72,30 @@ std::optional<CertifiedMesh> fast_mesh(const Mesh& deformed, const Mesh& rest, c
   CertifiedMesh out;
   for (std::size_t i = 0; i < topology.hinges.size(); ++i) {
     const Hinge& hinge = topology.hinges[i];
-    const std::optional<BoundedHinge> r = bounded_hinge(hinge_coordinates(rest, hinge), false);
-    const std::optional<BoundedHinge> h = bounded_hinge(hinge_coordinates(deformed, hinge), want_grad || want_hess);
+    const std::array<double, 12> x = hinge_coordinates(deformed, hinge), x_rest = hinge_coordinates(rest, hinge);
+    const std::optional<BoundedHinge> r = bounded_hinge(x_rest, false);
+    const std::optional<BoundedHinge> h = bounded_hinge(x, want_grad || want_hess);
     if (!r || !h) return std::nullopt;
-    const std::optional<PsiBounded> p = psi(model, parameters.k, parameters.k_d_over_dt, r->a, *h, *r);
-    if (!p) return std::nullopt;
-    energy = energy + p->value;  // eq. (1)
+    const std::optional<bool> equal = equal_angles(model, *h, *r, x, x_rest);
+    if (!equal) return std::nullopt;
+    const PsiBounded p = psi(model, parameters.k, parameters.k_d_over_dt, r->a, *h, *r, *equal);
+    energy = energy + p.value;  // eq. (1)
     if (want_grad) {
       double squares = 0;
       for (int c = 0; c < 12; ++c) {
-        const Bounded v = p->d1 * h->grad[c];
+        const Bounded v = p.d1 * h->grad[c];
         squares += v.hi * v.hi;  // the value rounded to double, as mesh.cpp's midpoints
       }
       out.gradient_contributions += std::sqrt(squares);
       for (int a4 = 0; a4 < 4; ++a4)
         for (int c = 0; c < 3; ++c) {
           Bounded& g = gradient[static_cast<std::size_t>(3 * hinge.x[a4] + c)];
-          g = g + p->d1 * h->grad[3 * a4 + c];  // eq. (2)
+          g = g + p.d1 * h->grad[3 * a4 + c];  // eq. (2)
         }
     }
     if (!want_hess) continue;
     auto local = [&](int row, int col) {  // eq. (3): psi' H + psi'' g g^T
-      return p->d1 * h->hess[12 * row + col] + p->d2 * h->grad[row] * h->grad[col];
+      return p.d1 * h->hess[12 * row + col] + p.d2 * h->grad[row] * h->grad[col];
     };
     double squares = 0;
     for (int row = 0; row < 12; ++row)
