@@ -46,6 +46,9 @@ inline double lower(const Bounded& a) { return (std::fabs(a.hi) - std::fabs(a.lo
 
 }  // namespace bounded
 
+// Known to be exactly zero (a zero computed from exact zeros: err stays 0).
+inline bool is_exact_zero(const Bounded& a) { return a.hi == 0 && a.lo == 0 && a.err == 0; }
+
 inline Bounded operator-(const Bounded& a) { return {-a.hi, -a.lo, a.err}; }
 
 // (a.hi + b.hi) exactly as s + e; t = a.lo + b.lo and v = e + t rounded (within u |t| and u |v|); s + v

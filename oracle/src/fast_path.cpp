@@ -178,7 +178,7 @@ void angle(const Evaluated& v, Bounded& theta, Bounded& t) {
 Bounded scaled(const Bounded& v, int p) {
   const Bounded s(std::ldexp(v.hi, p), std::ldexp(v.lo, p), std::ldexp(v.err, p) * inflate + 0x1p-1074);
   if (!(std::isfinite(s.hi) && std::isfinite(s.lo) && std::isfinite(s.err))) return undefined();
-  if (v.hi == 0 && v.lo == 0 && v.err == 0) return v;  // an exact zero stays one
+  if (is_exact_zero(v)) return v;  // an exact zero stays one
   return s;
 }
 
@@ -205,7 +205,7 @@ FastDecisions fast_path(const std::array<double, 12>& x) {
       }
     }
   // theta; Y exactly 0 is theta = 0 (X > 0) or the branch cut, +pi rounded (X < 0; docs/contract.md).
-  if (f.Y.hi == 0 && f.Y.lo == 0 && f.Y.err == 0) {
+  if (is_exact_zero(f.Y)) {
     d.value[0] = f.X.hi > 0 ? 0.0 : std::numbers::pi;
     settle(0, lower(f.X) > 0);
   } else {
@@ -221,7 +221,7 @@ std::optional<BoundedHinge> bounded_hinge(const std::array<double, 12>& x, bool 
   if (!v) return std::nullopt;
   const Form<Bounded>& f = v->f;
   BoundedHinge b;
-  if (f.Y.hi == 0 && f.Y.lo == 0 && f.Y.err == 0 && f.X.hi > 0 && lower(f.X) > 0) {
+  if (is_exact_zero(f.Y) && f.X.hi > 0 && lower(f.X) > 0) {
     b.theta = b.tan_half = Bounded(0.0);  // exactly flat
   } else {
     angle(*v, b.theta, b.tan_half);

@@ -9,9 +9,9 @@
 
 #include "fast_path.hpp"
 #include "hinge/oracle/exact.hpp"
+#include "hinge/reference/hinge_checks.hpp"
 #include "hinge_intervals.hpp"
 #include "mesh_scatter.hpp"
-#include "hinge/reference/hinge_checks.hpp"
 
 namespace hinge::oracle::detail {
 namespace {
@@ -21,8 +21,6 @@ using reference::Model;
 struct PsiBounded {
   Bounded value, d1, d2;  // psi, psi', psi''
 };
-
-bool exact_zero(const Bounded& v) { return v.hi == 0 && v.lo == 0 && v.err == 0; }
 
 // theta - theta_bar (shells) or t - t_bar (tan): the quantity psi' vanishes with.
 Bounded elastic(Model model, const BoundedHinge& h, const BoundedHinge& rest) {
@@ -52,7 +50,7 @@ PsiBounded psi(Model model, double k, double kd, const Bounded& a, const Bounded
 std::optional<bool> equal_angles(Model model, const BoundedHinge& h, const BoundedHinge& rest,
                                  const std::array<double, 12>& x, const std::array<double, 12>& x_rest) {
   const Bounded d = elastic(model, h, rest);
-  if (exact_zero(d)) return true;
+  if (is_exact_zero(d)) return true;
   if (bounded::lower(d) > 0) return false;
   if (same_angle(exact_hinge(x, false), exact_hinge(x_rest, false))) return true;
   return std::nullopt;
