@@ -122,6 +122,7 @@ namespace {
 struct Evaluated {
   Form<Bounded> f;
   Bounded l0;
+  Bounded g_inverse, h_inverse;  // 1 / (g_den l0), 1 / (h_den l0) (with the Hessian only)
   int E = 0;
 };
 
@@ -159,6 +160,10 @@ std::optional<Evaluated> evaluate(const std::array<double, 12>& x, bool with_hes
   fill_form(e, N, Nt, f, with_hessian);
   if (!(lower(f.s) > 0)) return std::nullopt;
   v.l0 = root(f.s);
+  if (with_hessian) {
+    v.g_inverse = reciprocal(f.g_den * v.l0);
+    v.h_inverse = reciprocal(f.h_den * v.l0);
+  }
   return v;
 }
 
@@ -176,9 +181,9 @@ void angle(const Evaluated& v, Bounded& theta, Bounded& t) {
 
 // v 2^p; a part that leaves the range of double is undefined(), one that underflows adds its loss.
 Bounded scaled(const Bounded& v, int p) {
+  if (is_exact_zero(v)) return v;  // an exact zero stays one
   const Bounded s(std::ldexp(v.hi, p), std::ldexp(v.lo, p), std::ldexp(v.err, p) * inflate + 0x1p-1074);
   if (!(std::isfinite(s.hi) && std::isfinite(s.lo) && std::isfinite(s.err))) return undefined();
-  if (is_exact_zero(v)) return v;  // an exact zero stays one
   return s;
 }
 
@@ -190,7 +195,7 @@ FastDecisions fast_path(const std::array<double, 12>& x) {
   if (!v) return d;
   const Form<Bounded>& f = v->f;
   const int E = v->E;
-  const Bounded g_inverse = reciprocal(f.g_den * v->l0), h_inverse = reciprocal(f.h_den * v->l0);
+  const Bounded &g_inverse = v->g_inverse, &h_inverse = v->h_inverse;
   auto settle = [&d](int k, bool decided) {
     d.decided[k] = decided;
     d.count += decided;
@@ -230,9 +235,9 @@ std::optional<BoundedHinge> bounded_hinge(const std::array<double, 12>& x, bool 
   // Algorithm 1: a = 3 |e_bar|^2 / A_bar = 6 s / (|N| + |Nt|): the scaling cancels.
   b.a = Bounded(6.0) * (f.s / (root(f.nn) + root(f.tt)));
   if (!with_derivatives) return b;
-  const Bounded g_inverse = reciprocal(f.g_den * v->l0), h_inverse = reciprocal(f.h_den * v->l0);
-  for (int k = 0; k < 12; ++k) b.grad[k] = scaled(f.g[k] * g_inverse, -v->E);
-  for (int k = 0; k < 144; ++k) b.hess[k] = scaled(f.h[k] * h_inverse, -2 * v->E);
+  for (int k = 0; k < 12; ++k) b.grad[k] = scaled(f.g[k] * v->g_inverse, -v->E);
+  for (int p = 0; p < 12; ++p)  // the upper triangle, and its mirror (h is exactly symmetric)
+    for (int q = p; q < 12; ++q) b.hess[12 * q + p] = b.hess[12 * p + q] = scaled(f.h[12 * p + q] * v->h_inverse, -2 * v->E);
   return b;
 }
 

@@ -1,6 +1,7 @@
 // The certified mesh oracle (hinge/oracle/mesh.hpp).
 #include "hinge/oracle/mesh.hpp"
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -150,18 +151,19 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
             }
         if (!want_hess) return;
         const Interval h_scale = Interval(e.h_den) * l0;
-        auto local = [&](int row, int col) {  // eq. (3): psi' H + psi'' g g^T
-          const Int& num = e.h[12 * row + col];
-          Interval v = Interval::zero();
-          if (sgn(num) != 0 && !p.d1.is_exact_zero()) v = p.d1 * scale2(Interval(num) / h_scale, 2 * e.F);
-          if (!g[row].is_exact_zero() && !g[col].is_exact_zero() && !p.d2.is_exact_zero()) v += p.d2 * g[row] * g[col];
-          return v;
-        };
+        std::array<Interval, 144> H;  // eq. (3): psi' H + psi'' g g^T, once per entry
         double squares = 0;
         for (int row = 0; row < 12; ++row)
-          for (int col = 0; col < 12; ++col) squares += square(midpoint(local(row, col)));
+          for (int col = 0; col < 12; ++col) {
+            const Int& num = e.h[12 * row + col];
+            Interval& v = H[12 * row + col];
+            v = Interval::zero();
+            if (sgn(num) != 0 && !p.d1.is_exact_zero()) v = p.d1 * scale2(Interval(num) / h_scale, 2 * e.F);
+            if (!g[row].is_exact_zero() && !g[col].is_exact_zero() && !p.d2.is_exact_zero()) v += p.d2 * g[row] * g[col];
+            squares += square(midpoint(v));
+          }
         out.hessian_contributions += std::sqrt(squares);
-        detail::scatter_hessian(hinge, local, hessian);
+        detail::scatter_hessian(hinge, [&H](int row, int col) { return H[12 * row + col]; }, hessian);
       });
     }
 

@@ -3,6 +3,7 @@
 // decided, so the doubles are the same.
 #include "mesh_fast_path.hpp"
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -79,29 +80,30 @@ std::optional<CertifiedMesh> fast_mesh(const Mesh& deformed, const Mesh& rest, c
     const PsiBounded p = psi(model, parameters.k, parameters.k_d_over_dt, r->a, *h, *r, *equal);
     energy = energy + p.value;  // eq. (1)
     if (want_grad) {
+      std::array<Bounded, 12> dg;  // psi' grad theta, the hinge's own energy gradient
       double squares = 0;
       for (int c = 0; c < 12; ++c) {
-        const Bounded v = p.d1 * h->grad[c];
-        squares += v.hi * v.hi;  // the value rounded to double, as mesh.cpp's midpoints
+        dg[c] = p.d1 * h->grad[c];
+        squares += dg[c].hi * dg[c].hi;  // the value rounded to double, as mesh.cpp's midpoints
       }
       out.gradient_contributions += std::sqrt(squares);
       for (int a4 = 0; a4 < 4; ++a4)
         for (int c = 0; c < 3; ++c) {
           Bounded& g = gradient[static_cast<std::size_t>(3 * hinge.x[a4] + c)];
-          g = g + p.d1 * h->grad[3 * a4 + c];  // eq. (2)
+          g = g + dg[3 * a4 + c];  // eq. (2)
         }
     }
     if (!want_hess) continue;
-    auto local = [&](int row, int col) {  // eq. (3): psi' H + psi'' g g^T
-      return p.d1 * h->hess[12 * row + col] + p.d2 * h->grad[row] * h->grad[col];
-    };
+    std::array<Bounded, 144> H;  // eq. (3): psi' Hess theta + psi'' grad theta grad theta^T, once per entry
     double squares = 0;
     for (int row = 0; row < 12; ++row)
       for (int col = 0; col < 12; ++col) {
-        const Bounded v = local(row, col);
+        Bounded& v = H[12 * row + col];
+        v = p.d1 * h->hess[12 * row + col] + p.d2 * h->grad[row] * h->grad[col];
         squares += v.hi * v.hi;  // the value rounded to double, as mesh.cpp's midpoints
       }
     out.hessian_contributions += std::sqrt(squares);
+    auto local = [&H](int row, int col) { return H[12 * row + col]; };
     scatter_hessian(hinge, local, hessian);
   }
   if (!decide(energy, 0, out.rounded.energy)) return std::nullopt;
