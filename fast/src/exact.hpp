@@ -15,7 +15,7 @@
 // two_sum and fast_two_sum serve long double too (the exact sums of hinge_kernel.hpp's wide-range path).
 //
 // These functions need IEEE double arithmetic with round-to-nearest and no contraction of a * b + c
-// into a fused multiply-add behind our back: fast/CMakeLists.txt compiles with -ffp-contract=off.
+// into a fused multiply-add behind our back: the project compiles with -ffp-contract=off.
 #pragma once
 
 #include <cmath>

@@ -12,7 +12,7 @@
 // So err is an upper bound at every step, and an exactly computed zero (from exact zero operands) keeps
 // err = 0.
 //
-// Requires IEEE double with round to nearest and no contraction (oracle/CMakeLists.txt: -ffp-contract=off).
+// Requires IEEE double with round to nearest and no contraction (the project builds with -ffp-contract=off).
 #pragma once
 
 #include <cmath>
