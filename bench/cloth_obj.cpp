@@ -1,4 +1,4 @@
-// cloth_obj N SEED FILE: writes the benchmark's N x N cloth (hinge/reference/samples.hpp) as an OBJ file (seed 1: the rest state,
+// cloth_obj N SEED FILE: writes the benchmark's N x N cloth (hinge/core/samples.hpp) as an OBJ file (seed 1: the rest state,
 // seed 2: the deformed state of the benchmarks), for timing whole processes such as
 // `hinge hessian --mesh deformed.obj --rest rest.obj --repeat R` (bench/README.md).
 #include <charconv>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "hinge/io/obj.hpp"
-#include "hinge/reference/samples.hpp"
+#include "hinge/core/samples.hpp"
 
 int main(int argc, char** argv) {
   int n = 0;

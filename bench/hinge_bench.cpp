@@ -43,7 +43,7 @@
 #include "hinge/oracle/oracle.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
-#include "hinge/reference/samples.hpp"
+#include "hinge/core/samples.hpp"
 #include "hinge/study/measure.hpp"
 
 namespace hinge::bench {
@@ -57,7 +57,7 @@ int env_int(const char* name, int fallback) {
 // ---- one hinge ---------------------------------------------------------------------------------------
 
 const std::vector<std::array<double, 12>>& bench_hinges() {
-  static const auto h = well_shaped_hinges(1024, 7);
+  static const auto h = reference::well_shaped_hinges(1024, 7);
   return h;
 }
 
@@ -207,8 +207,8 @@ struct Cloth {
   Mesh rest, deformed;
   Topology topology;
   std::unique_ptr<fast::Assembler<double>> assembler;
-  std::vector<reference::HingeCoefficients<double>> coefficients;
-  reference::MeshDerivatives<double> out;
+  std::vector<HingeCoefficients<double>> coefficients;
+  MeshDerivatives<double> out;
 };
 Cloth& cloth_of(int n) {
   static std::map<int, std::unique_ptr<Cloth>> clothes;
@@ -221,7 +221,7 @@ Cloth& cloth_of(int n) {
     c.deformed = cloth(n, 2);
     c.topology = build_topology(c.rest);
     c.assembler = std::make_unique<fast::Assembler<double>>(c.topology);
-    c.coefficients = c.assembler->rest_state(c.rest, {reference::Model::tan, 1.0, 0}, 2);
+    c.coefficients = c.assembler->rest_state(c.rest, {Model::tan, 1.0, 0}, 2);
   }
   return *slot;
 }
@@ -230,7 +230,7 @@ void mesh_fast(benchmark::State& state) {
   Cloth& c = cloth_of(static_cast<int>(state.range(0)));
   const int threads = static_cast<int>(state.range(1));
   for (auto _ : state) {
-    c.assembler->evaluate(c.deformed, c.coefficients, reference::Model::tan, reference::want_all, threads, c.out);
+    c.assembler->evaluate(c.deformed, c.coefficients, Model::tan, want_all, threads, c.out);
     benchmark::DoNotOptimize(c.out.energy);
   }
   state.counters["edges"] = static_cast<double>(c.topology.hinges.size());
@@ -240,7 +240,7 @@ void mesh_fast(benchmark::State& state) {
 void mesh_reference(benchmark::State& state) {
   Cloth& c = cloth_of(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    auto m = reference::assemble<double>(c.deformed, c.topology, c.coefficients, reference::Model::tan);
+    auto m = reference::assemble<double>(c.deformed, c.topology, c.coefficients, Model::tan);
     benchmark::DoNotOptimize(m.energy);
   }
   state.counters["edges"] = static_cast<double>(c.topology.hinges.size());

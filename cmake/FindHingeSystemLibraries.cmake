@@ -37,6 +37,9 @@ hinge_system_library(MPFI::mpfi mpfi.h mpfi DEPENDS MPFR::mpfr)
 hinge_system_library(QD::qd qd/dd_real.h qd)
 # libquadmath lives in GCC's own directories, searched for the library only: its header, which Boost's
 # float128 includes, is the compiler's business (GCC finds it in its own include directory).
-hinge_system_library(Quadmath::quadmath "" quadmath HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES})
+# Only where float128 is built (HINGE_FLOAT128; the installed package sets it as it was built).
+if(NOT DEFINED HINGE_FLOAT128 OR HINGE_FLOAT128)
+  hinge_system_library(Quadmath::quadmath "" quadmath HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES})
+endif()
 
 find_package_handle_standard_args(HingeSystemLibraries REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS})

@@ -1,6 +1,6 @@
 # hinge_library(NAME source...): the static library hinge_NAME with its alias hinge::NAME (also the name
 # the installed package exports), its public headers in include/, C++20, the project's warnings, and
-# position-independent code (the plugins in capi/ and the Python module link the libraries into shared
+# position-independent code (the plugins in conformance/plugins/ and the Python module link the libraries into shared
 # objects).
 function(hinge_library name)
   add_library(hinge_${name} STATIC ${ARGN})

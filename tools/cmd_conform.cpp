@@ -6,7 +6,7 @@
 //   hinge conform --mesh X.obj [--rest R.obj] --energy E --k K --hessian H.mtx [--gradient G.txt]
 //   hinge conform --write-vectors DIR                            regenerate conformance/ (bit for bit)
 // Exit status: 0 within the tolerance policy everywhere, 1 not, 2 usage error or unreadable candidate.
-// The numerics (certified values, conditioning, policy, comparisons, report) are hinge::oracle::conformance's.
+// The numerics (certified values, conditioning, policy, comparisons, report) are hinge::conformance's.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -22,16 +22,18 @@
 #include "hinge/io/number.hpp"
 #include "hinge/io/obj.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/oracle/conformance.hpp"
-#include "hinge/oracle/plugin.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/conformance/report.hpp"
+#include "hinge/conformance/vectors.hpp"
+#include "hinge/conformance/plugin.hpp"
+#include "hinge/core/bending_problem.hpp"
+#include "hinge/core/errors.hpp"
 #include "progress.hpp"
 
 namespace hinge::tools {
 
 namespace {
 
-namespace conf = oracle::conformance;
+namespace conf = conformance;
 
 struct ConformOptions {
   bool inputs = false, verbose = false;
@@ -81,7 +83,7 @@ void print_cases(std::ostream& out, const std::vector<conf::CaseOutcome>& outcom
 conf::CandidateResult method_result(methods::Method method, const ScalarType& scalar, const std::array<double, 12>& x) {
   conf::CandidateResult r;
   try {
-    const reference::RoundedTheta t = methods::evaluate_hinge(method, scalar, x);
+    const RoundedTheta t = methods::evaluate_hinge(method, scalar, x);
     r.status = conf::CandidateResult::Status::ok;
     r.theta = t.theta;
     r.grad = t.grad;
@@ -182,17 +184,14 @@ void print_mesh_comparison(const char* what, const conf::MeshComparison& c) {
 int run_mesh(const ConformOptions& o) {
   if (o.hessian.empty()) throw std::invalid_argument("--mesh needs --hessian H.mtx (the candidate's Hessian)");
   if (o.energy.empty()) throw std::invalid_argument("--mesh needs --energy (tan, shells, willmore, bridson)");
-  reference::EnergyParameters parameters;
-  parameters.model = reference::parse_model(o.energy);
-  parameters.k = o.k;
+  const EnergyParameters parameters = bending_problem({o.k, "--k"}, o.energy, "--energy").parameters();
   Mesh deformed, rest;
   Topology topology;
   deformed = io::read_obj(o.mesh);  // hinge::InputError: exit status 1, as for every command that reads a mesh
   rest = o.rest.empty() ? deformed : io::read_obj(o.rest);
   topology = build_topology(deformed);
-  check_faces_nondegenerate(deformed);
-  check_faces_nondegenerate(rest);
-  const oracle::CertifiedMesh m = oracle::certified_mesh(deformed, rest, topology, parameters, reference::want_all);
+  check_bending_mesh(topology, deformed, o.rest.empty() ? nullptr : &rest, {o.mesh, o.rest, "", false});
+  const oracle::CertifiedMesh m = oracle::certified_mesh(deformed, rest, topology, parameters, want_all);
   const Eigen::Index n = 3 * static_cast<Eigen::Index>(topology.vertex_count);
   Eigen::SparseMatrix<double> hessian;
   std::optional<std::vector<double>> gradient;

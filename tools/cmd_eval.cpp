@@ -4,7 +4,7 @@
 #include "hinge/io/jsonl.hpp"
 #include "hinge/io/number.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/oracle/conformance.hpp"
+#include "hinge/oracle/conditioning.hpp"
 #include "hinge_stream.hpp"
 
 namespace hinge::tools {
@@ -42,7 +42,7 @@ Action add_eval(CLI::App& app) {
       std::string line = io::result_line(id_json, o->faithful ? fast::faithful_derivatives_rounded(x)
                                                               : methods::evaluate_hinge(method, scalar, x));
       if (o->cond) {
-        const auto kappa = oracle::conformance::expected({"", "", x}).conditioning.kappa;
+        const auto kappa = oracle::certified_with_conditioning(x).conditioning.kappa;
         line.pop_back();  // '}'
         line += ", \"kappa\": {\"theta\": " + io::format_double(kappa[0]) + ", \"grad\": " +
                 io::format_double(kappa[1]) + ", \"hess\": " + io::format_double(kappa[2]) + "}}";

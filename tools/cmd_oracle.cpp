@@ -10,7 +10,7 @@
 #include "hinge/io/jsonl.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
-#include "hinge/oracle/output_line.hpp"
+#include "hinge/conformance/certified_line.hpp"
 #include "hinge_stream.hpp"
 #include "mesh_job.hpp"
 #include "progress.hpp"
@@ -39,7 +39,7 @@ int run_hinges(const OracleOptions& o) {
           ++flagged_hinges;
           flagged_outputs += c.uncertified.size();
         }
-        return oracle::certified_line(id_json, c, o.report_precision);
+        return conformance::certified_line(id_json, c, o.report_precision);
       });
   if (flagged_outputs > 0)
     std::cerr << "hinge oracle: " << flagged_outputs << " output(s) in " << flagged_hinges

@@ -12,7 +12,7 @@
 
 #include "commands.hpp"
 #include "hinge/io/atomic_file.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/study/study.hpp"
 #include "progress.hpp"
 

@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "version.hpp"
 
 int main(int argc, char** argv) {

@@ -1,9 +1,6 @@
 // hinge hessian / hinge oracle --mesh: reading the meshes, writing the results (tools/mesh_job.hpp).
 #include "mesh_job.hpp"
 
-#include <cmath>
-#include <thread>
-
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/matrix_market.hpp"
 #include "hinge/io/number.hpp"
@@ -18,12 +15,11 @@ void add_mesh_options(CLI::App* cmd, MeshOptions& o, bool mesh_required) {
   cmd->add_option("--energy", o.energy, "Bending energy: tan, shells (also willmore, bridson; docs/quantities.md)");
   cmd->add_option("--k", o.k, "Bending stiffness k");
   cmd->add_option("--young", o.young, "Young's modulus Y (k = Y h^3 / (24 (1 - nu^2)), eq. (11))");
-  cmd->add_option("--poisson", o.poisson, "Poisson's ratio nu, in (-1, 1)");
+  cmd->add_option("--poisson", o.poisson, "Poisson's ratio nu, in (-1, 0.5]");
   cmd->add_option("--thickness", o.thickness, "Shell thickness h");
   cmd->add_option("--out", o.out, "Write the energy Hessian here (Matrix Market, coordinate real symmetric)");
   cmd->add_option("--gradient", o.gradient, "Write the energy gradient here (3n numbers, one per line)");
-  cmd->add_option("--threads", o.threads, "Threads (default: all cores); never changes an output bit")
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", o.threads, "Threads (default 0: all cores); never changes an output bit");
   cmd->add_option("--repeat", o.repeat, "Evaluate N times (for timing from outside); outputs from the last")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--allow-no-hinges", o.allow_no_hinges,
@@ -32,22 +28,16 @@ void add_mesh_options(CLI::App* cmd, MeshOptions& o, bool mesh_required) {
 
 namespace {
 
-// k from --k, or from --young/--poisson/--thickness by eq. (11). Usage errors throw std::invalid_argument.
-double stiffness(const MeshOptions& o) {
+// k from --k, or from --young/--poisson/--thickness by eq. (11) (hinge/core/bending_problem.hpp checks the
+// values). Usage errors throw std::invalid_argument.
+BendingProblem problem(const MeshOptions& o) {
   const bool material = o.young || o.poisson || o.thickness;
   if (o.k && material) throw std::invalid_argument("give either --k or --young/--poisson/--thickness, not both");
-  if (o.k) {
-    if (!std::isfinite(*o.k) || *o.k < 0) throw std::invalid_argument("--k must be finite and >= 0");
-    return *o.k;
-  }
+  if (o.k) return bending_problem({*o.k, "--k"}, o.energy, "--energy");
   if (!(o.young && o.poisson && o.thickness))
     throw std::invalid_argument("give --k K, or all three of --young Y --poisson NU --thickness H");
-  if (!std::isfinite(*o.young) || *o.young < 0) throw std::invalid_argument("--young must be finite and >= 0");
-  if (!(*o.poisson > -1 && *o.poisson < 1)) throw std::invalid_argument("--poisson must be in (-1, 1)");
-  if (!std::isfinite(*o.thickness) || *o.thickness <= 0) throw std::invalid_argument("--thickness must be > 0");
-  const double k = reference::bending_stiffness(*o.young, *o.poisson, *o.thickness);  // eq. (11)
-  if (!std::isfinite(k)) throw std::invalid_argument("k = Y h^3 / (24 (1 - nu^2)) overflows");
-  return k;
+  return bending_problem({*o.young, "--young"}, {*o.poisson, "--poisson"}, {*o.thickness, "--thickness"}, o.energy,
+                         "--energy");
 }
 
 }  // namespace
@@ -55,25 +45,19 @@ double stiffness(const MeshOptions& o) {
 MeshJob load_mesh_job(const MeshOptions& o) {
   if (o.energy.empty()) throw std::invalid_argument("--energy is required (tan or shells)");
   MeshJob job;
-  job.parameters.model = reference::parse_model(o.energy);
-  if (job.parameters.model == reference::Model::viscoelastic)
-    throw std::invalid_argument("--energy viscoelastic is available from the library, not from this command");
-  job.parameters.k = stiffness(o);
-  job.threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  job.request = reference::want_energy | (o.gradient.empty() ? 0u : reference::want_gradient) |
-                (o.out.empty() ? 0u : reference::want_hessian);
+  job.parameters = problem(o).parameters();
+  job.threads = resolve_threads(o.threads, "--threads");
+  job.request = want_energy | (o.gradient.empty() ? 0u : want_gradient) |
+                (o.out.empty() ? 0u : want_hessian);
   job.deformed = io::read_obj(o.mesh);
   if (!o.rest.empty()) job.rest = io::read_obj(o.rest);
   job.topology = build_topology(job.deformed);
-  if (job.topology.hinges.empty() && !o.allow_no_hinges)
-    throw InputError(o.mesh + ": the mesh has no interior edge, so its bending energy is 0 whatever its shape" +
-                     " (--allow-no-hinges if that is meant)");
-  check_faces_nondegenerate(job.deformed);
-  if (job.rest) check_faces_nondegenerate(*job.rest);
+  check_bending_mesh(job.topology, job.deformed, job.rest ? &*job.rest : nullptr,
+                     {o.mesh, o.rest, "--allow-no-hinges", o.allow_no_hinges});
   return job;
 }
 
-int write_mesh_outputs(const MeshOptions& o, const reference::RoundedMesh& result) {
+int write_mesh_outputs(const MeshOptions& o, const RoundedMesh& result) {
   std::optional<io::AtomicFile> hessian_file, gradient_file;
   if (!o.out.empty())
     io::write_matrix_market(hessian_file.emplace(o.out).stream(), result.hessian,

@@ -10,15 +10,16 @@
 #include <string>
 
 #include "commands.hpp"
+#include "hinge/core/bending_problem.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/reference/errors.hpp"
 
 namespace hinge::tools {
 
 struct MeshOptions {
   std::string mesh, rest, energy, out, gradient;
   std::optional<double> k, young, poisson, thickness;
-  int threads = 0;  // 0: all cores
+  long long threads = 0;  // 0: all cores
   int repeat = 1;
   bool allow_no_hinges = false;  // a mesh without an interior edge is accepted (its energy is 0)
 };
@@ -32,8 +33,8 @@ struct MeshJob {
   Mesh deformed;
   std::optional<Mesh> rest;  // --rest; else the deformed mesh is the rest shape
   Topology topology;
-  reference::EnergyParameters parameters;
-  unsigned request = reference::want_energy;
+  EnergyParameters parameters;
+  unsigned request = want_energy;
   int threads = 1;
   methods::MeshInput input() const {
     return {&deformed, rest ? &*rest : &deformed, &topology, parameters, request, threads};
@@ -46,7 +47,7 @@ MeshJob load_mesh_job(const MeshOptions& o);
 
 // Writes the Matrix Market Hessian (--out) and the gradient (--gradient), both or neither, then prints
 // "energy <value>". Returns the exit status.
-int write_mesh_outputs(const MeshOptions& o, const reference::RoundedMesh& result);
+int write_mesh_outputs(const MeshOptions& o, const RoundedMesh& result);
 
 // Runs body() (which returns an exit status); an InputError, DomainError or I/O failure becomes the message
 // "hinge <what>: ..." on standard error and exit status 1, with no output file left behind.

@@ -9,8 +9,8 @@
 #include <limits>
 #include <optional>
 
-#include "hinge/reference/hinge_checks.hpp"
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/hinge_checks.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::baselines::detail {
 

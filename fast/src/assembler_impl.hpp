@@ -29,9 +29,9 @@
 
 #include "assembly_plan.hpp"
 #include "hinge/fast/assemble.hpp"
-#include "hinge/reference/errors.hpp"
-#include "hinge/reference/fp_environment.hpp"
-#include "hinge/reference/hinge_checks.hpp"
+#include "hinge/core/errors.hpp"
+#include "hinge/core/fp_environment.hpp"
+#include "hinge/core/hinge_checks.hpp"
 #include "passes.hpp"
 #include "team.hpp"
 
@@ -196,12 +196,12 @@ void Workspace<Scalar>::report(const Mesh& mesh, Purpose purpose) {
       check_hinge(hinge_coordinates(mesh, hg));  // the contract's checks, exactly, in their order
       // The faces are sound (a false alarm of the area filter): the angle is evaluated, and the energy's
       // own objection, if any, is the error.
-      const reference::BendAngle<Scalar> b = bend_angle<Scalar>(mesh, hg, face_[hg.upper], face_[hg.lower], true);
-      if (purpose == Purpose::evaluate) reference::psi(last_model_, (*last_coefficients_)[h], b);
-      else if (purpose == Purpose::rest && reference::infinite_at_pi(last_model_) && b.on_branch_cut)
-        reference::throw_folded_rest(last_model_);
+      const BendAngle<Scalar> b = bend_angle<Scalar>(mesh, hg, face_[hg.upper], face_[hg.lower], true);
+      if (purpose == Purpose::evaluate) psi(last_model_, (*last_coefficients_)[h], b);
+      else if (purpose == Purpose::rest && infinite_at_pi(last_model_) && b.on_branch_cut)
+        throw_folded_rest(last_model_);
       else if (purpose == Purpose::previous && b.on_branch_cut)
-        reference::throw_folded_previous();
+        throw_folded_previous();
     });
   }
 }
@@ -227,8 +227,8 @@ std::vector<HingeCoefficients<Scalar>> Workspace<Scalar>::rest_state(const Mesh&
   want_theta_ = true;
   last_model_ = parameters.model;
   const Scalar k = from_double<Scalar>(parameters.k), kd = from_double<Scalar>(parameters.k_d_over_dt);
-  hinge_passes(rest, threads, Purpose::rest, [&](Index h, const reference::BendAngle<Scalar>& b) {
-    if (reference::infinite_at_pi(parameters.model) && b.on_branch_cut) throw DomainError("folded rest hinge");
+  hinge_passes(rest, threads, Purpose::rest, [&](Index h, const BendAngle<Scalar>& b) {
+    if (infinite_at_pi(parameters.model) && b.on_branch_cut) throw DomainError("folded rest hinge");
     const Hinge& hg = topology_->hinges[h];
     const Vec3<Scalar> e0 = vsub(point<Scalar>(rest, hg.x[2]), point<Scalar>(rest, hg.x[1]));
     HingeCoefficients<Scalar>& c = coefficients[h];
@@ -254,7 +254,7 @@ void Workspace<Scalar>::set_previous_state(std::vector<HingeCoefficients<Scalar>
   const Mesh& previous = normalized(previous_given, p);
   face_pass(previous, threads, "previous");
   want_theta_ = false;
-  hinge_passes(previous, threads, Purpose::previous, [&](Index h, const reference::BendAngle<Scalar>& b) {
+  hinge_passes(previous, threads, Purpose::previous, [&](Index h, const BendAngle<Scalar>& b) {
     if (b.on_branch_cut) throw DomainError("folded previous hinge");
     coefficients[h].phi_hat = 2 * b.tan_half_theta;
     return Scalar(0);
@@ -274,7 +274,7 @@ void Workspace<Scalar>::evaluate(const Mesh& deformed_given, const std::vector<H
   face_pass(deformed, threads, "deformed");  // line 8 (normals first: theta needs both of every edge)
   if (coefficients.size() != topology_->hinges.size())
     throw std::invalid_argument("assemble: one HingeCoefficients per hinge expected");
-  const bool want_gradient = request & reference::want_gradient, want_hessian = request & reference::want_hessian;
+  const bool want_gradient = request & hinge::want_gradient, want_hessian = request & hinge::want_hessian;
   const std::size_t hinge_count = topology_->hinges.size();
 
   psi1_.resize(hinge_count);
@@ -282,8 +282,8 @@ void Workspace<Scalar>::evaluate(const Mesh& deformed_given, const std::vector<H
   want_theta_ = needs_theta(model);
   last_model_ = model;
   last_coefficients_ = &coefficients;
-  hinge_passes(deformed, threads, Purpose::evaluate, [&](Index h, const reference::BendAngle<Scalar>& b) {
-    const reference::Psi<Scalar> p = reference::psi(model, coefficients[h], b);  // lines 4-5
+  hinge_passes(deformed, threads, Purpose::evaluate, [&](Index h, const BendAngle<Scalar>& b) {
+    const Psi<Scalar> p = psi(model, coefficients[h], b);  // lines 4-5
     psi1_[h] = p.d1;
     psi2_[h] = p.d2;
     return p.value;

@@ -137,7 +137,7 @@ HINGE_FAST_INLINE DoubleDoubleOf<L> times_corrected(const DoubleDoubleOf<L>& c, 
 // The sign of det[e0, x0 - x1, x1 - x3] (the sign of theta, proofs/sign-convention.md) from the
 // rounded differences p = fl(x2 - x1), q = fl(x0 - x1), r = fl(x3 - x1), each possibly times one exact
 // power of two: -1, 0 or +1 when certified, kUndecided otherwise (then hinge_orientation_exact decides).
-// This is the filter of reference/src/predicates.cpp (bound fl(9 u P'), guard [2^-300, 2^300]), with the
+// This is the filter of core/src/predicates.cpp (bound fl(9 u P'), guard [2^-300, 2^300]), with the
 // same proof; `computed` receives the (uncertified) hinge determinant.
 constexpr int kUndecided = 2;
 // The hinge determinant -det[p, q, r] = -sum_k p_k (q_i r_j - q_j r_i), (i, j) = (k + 1, k + 2) mod 3, in

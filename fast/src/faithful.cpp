@@ -11,9 +11,9 @@ HingeDerivatives<double> faithful_hinge_derivatives(const std::array<double, 12>
   return out;
 }
 
-reference::RoundedTheta faithful_derivatives_rounded(const std::array<double, 12>& x) {
+RoundedTheta faithful_derivatives_rounded(const std::array<double, 12>& x) {
   const HingeDerivatives<double> d = faithful_hinge_derivatives(x, true);
-  return reference::round_theta(d.theta, d.grad, d.hess);
+  return round_theta(d.theta, d.grad, d.hess);
 }
 
 }  // namespace hinge::fast

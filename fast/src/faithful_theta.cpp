@@ -4,10 +4,11 @@
 #include <gmp.h>
 #include <mpfr.h>
 
-#include <boost/multiprecision/float128.hpp>
-
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::fast::detail {
 namespace {
@@ -16,7 +17,16 @@ static_assert(sizeof(long double) > sizeof(double), "the faithful mode's theta n
 
 long double value(const std::array<double, 2>& dd) { return static_cast<long double>(dd[0]) + dd[1]; }
 
-using Quad = boost::multiprecision::float128;  // the accurate paths: 113 bits, libquadmath's sqrtq and atan2q
+// The accurate paths: 113 bits. GCC's __float128 (libquadmath's sqrtq and atan2q) where it is built (x86);
+// elsewhere long double where it is binary128 (aarch64), else Boost's software binary128.
+#if HINGE_HAVE_FLOAT128
+using Quad = float128;
+#elif LDBL_MANT_DIG == 113
+using Quad = long double;
+#else
+using Quad = bin128;
+#endif
+using std::ldexp;
 
 Quad quad(const std::array<double, 2>& dd) { return Quad(dd[0]) + Quad(dd[1]); }
 

@@ -32,8 +32,8 @@
 #include "exact.hpp"
 #include "faithful_theta.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
-#include "hinge/reference/hinge_checks.hpp"
-#include "hinge/reference/predicates.hpp"
+#include "hinge/core/hinge_checks.hpp"
+#include "hinge/core/predicates.hpp"
 
 namespace hinge::fast {
 
@@ -342,7 +342,10 @@ HINGE_FAST_INLINE Scalar lane_value(const W& a, int l) {
 // theta that many units divided by theta.
 template <class Scalar>
 inline constexpr bool kNearFlatFromDeterminant = std::is_same_v<Scalar, long double> || std::is_same_v<Scalar, dd> ||
-                                                  std::is_same_v<Scalar, float128> || std::is_same_v<Scalar, bin128>;
+#if HINGE_HAVE_FLOAT128
+                                                  std::is_same_v<Scalar, float128> ||
+#endif
+                                                  std::is_same_v<Scalar, bin128>;
 
 // 2^-2m for a normal m = M in [2^m, 2^(m+1)) with |m| <= 500 (exact, from the exponent bits).
 HINGE_FAST_INLINE double inverse_square_power_of_two(double M) {

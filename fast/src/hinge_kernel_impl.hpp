@@ -6,7 +6,7 @@
 
 #include "double_kernel.hpp"
 #include "generic_kernel.hpp"
-#include "hinge/reference/fp_environment.hpp"
+#include "hinge/core/fp_environment.hpp"
 
 namespace hinge::fast {
 

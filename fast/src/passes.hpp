@@ -23,14 +23,13 @@
 #include "columns.hpp"
 #include "exact.hpp"
 #include "hinge/fast/pattern.hpp"
-#include "hinge/reference/energy.hpp"
-#include "hinge/reference/predicates.hpp"
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/energy.hpp"
+#include "hinge/core/predicates.hpp"
+#include "hinge/core/scalar.hpp"
 #include "triangle_kernel.hpp"
 
 namespace hinge::fast::detail {
 
-using reference::Model;
 
 template <class Scalar>
 HINGE_FAST_INLINE Vec3<Scalar> point(const Mesh& mesh, Index v) {
@@ -78,7 +77,7 @@ HINGE_FAST_INLINE void face_pass_body(const Mesh& mesh, const Pattern& pattern, 
 // |n + n~|) (Fig. 3) when `want_theta`; the sign of theta on the flat side (n . n~ >= 0) that of the
 // computed determinant, on the folded side the filter's or, when it cannot decide, the exact one.
 template <class Scalar>
-HINGE_FAST_INLINE reference::BendAngle<Scalar> bend_angle(const Mesh& mesh, const Hinge& h, const std::array<Scalar, 4>& nu,
+HINGE_FAST_INLINE BendAngle<Scalar> bend_angle(const Mesh& mesh, const Hinge& h, const std::array<Scalar, 4>& nu,
                                                           const std::array<Scalar, 4>& nl, bool want_theta) {
   using std::atan2;
   using std::sqrt;
@@ -104,7 +103,7 @@ HINGE_FAST_INLINE reference::BendAngle<Scalar> bend_angle(const Mesh& mesh, cons
     sign = orientation_filter(p, q, r, computed);
     if (sign == kUndecided) sign = hinge_orientation_exact(x0, x1, x2, x3);
   }
-  reference::BendAngle<Scalar> b;
+  BendAngle<Scalar> b;
   if (sign == 0) {  // coplanar: theta is 0 or pi
     b.on_branch_cut = folded_side;
     b.theta = folded_side ? pi_of<Scalar>() : Scalar(0);

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::fast {
 

@@ -6,20 +6,20 @@
 #include <string>
 
 #include "hinge/fast/hinge_kernel.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::fast {
 namespace {
 
 template <class Scalar>
-reference::RoundedTheta theta_in(const std::array<double, 12>& x) {
+RoundedTheta theta_in(const std::array<double, 12>& x) {
   const HingeDerivatives<Scalar> d = hinge_derivatives<Scalar>(x, true);
-  return reference::round_theta(d.theta, d.grad, d.hess);
+  return round_theta(d.theta, d.grad, d.hess);
 }
 
 }  // namespace
 
-reference::RoundedTheta hinge_derivatives_rounded(const ScalarType& type, const std::array<double, 12>& x) {
+RoundedTheta hinge_derivatives_rounded(const ScalarType& type, const std::array<double, 12>& x) {
   return visit_scalar_type(type, [&]<class Scalar>() { return theta_in<Scalar>(x); });
 }
 

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "hinge/io/jsonl.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::io {
 namespace {
@@ -124,7 +124,7 @@ std::string eval_output_line(const std::string& id, const EvalOutput& r) {
   if (r.status == Status::error || r.status == Status::missing)
     return error_line(id_json, r.error.empty() ? "cannot evaluate" : r.error);
   if (r.status == Status::nonfinite) return error_line(id_json, "non-finite result");
-  reference::RoundedTheta v;
+  RoundedTheta v;
   v.theta = r.theta;
   v.grad = r.grad;
   v.hess = r.hess;

@@ -99,7 +99,7 @@ HingeLine parse_hinge_line(const std::string& text, long line_number) {
   return h;
 }
 
-std::string result_line(const std::string& id_json, const reference::RoundedTheta& r) {
+std::string result_line(const std::string& id_json, const RoundedTheta& r) {
   std::string out;
   out.reserve(4096);
   out += "{\"id\": " + id_json + ", \"theta\": ";

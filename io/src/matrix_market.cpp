@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "hinge/io/number.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::io {
 

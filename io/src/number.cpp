@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string_view>
 
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::io {
 

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "hinge/io/number.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::io {
 namespace {

@@ -38,7 +38,7 @@ Method parse_method(std::string_view name) {
   throw std::invalid_argument("unknown method '" + std::string(name) + "': expected one of " + known);
 }
 
-reference::RoundedTheta evaluate_hinge(Method method, const ScalarType& scalar, const std::array<double, 12>& x) {
+RoundedTheta evaluate_hinge(Method method, const ScalarType& scalar, const std::array<double, 12>& x) {
   switch (method) {
     case Method::reference: return reference::theta_derivatives_rounded(scalar, x);
     case Method::fast: return fast::hinge_derivatives_rounded(scalar, x);
@@ -61,12 +61,12 @@ void MeshEvaluator::evaluate(bool last) {
   impl_->evaluate(last);
 }
 
-reference::RoundedMesh MeshEvaluator::take_result() {
+RoundedMesh MeshEvaluator::take_result() {
   if (scalar_.kind == ScalarType::Kind::kind_mpfr) set_mpfr_bits(scalar_.mpfr_bits);
   return impl_->take_result();
 }
 
-reference::RoundedMesh evaluate_mesh(Method method, const ScalarType& scalar, const MeshInput& in) {
+RoundedMesh evaluate_mesh(Method method, const ScalarType& scalar, const MeshInput& in) {
   MeshEvaluator evaluator(method, scalar, in);
   evaluator.evaluate(true);
   return evaluator.take_result();

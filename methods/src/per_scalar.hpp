@@ -8,24 +8,24 @@
 #include <memory>
 
 #include "hinge/methods/methods.hpp"
-#include "hinge/reference/results.hpp"
+#include "hinge/core/results.hpp"
 
 namespace hinge::methods::detail {
 
 template <HingeScalar Scalar>
-reference::RoundedTheta baseline_hinge(Method method, const std::array<double, 12>& x);
+RoundedTheta baseline_hinge(Method method, const std::array<double, 12>& x);
 
 // MeshEvaluator's implementation in one scalar type.
 struct EvaluatorImpl {
   virtual ~EvaluatorImpl() = default;
   virtual void evaluate(bool last) = 0;
-  virtual reference::RoundedMesh take_result() = 0;
+  virtual RoundedMesh take_result() = 0;
 };
 template <HingeScalar Scalar>
 std::unique_ptr<EvaluatorImpl> make_evaluator(Method method, const MeshInput& input);
 
 #define HINGE_METHODS_PER_SCALAR_EXTERN(S)                                                                \
-  extern template reference::RoundedTheta baseline_hinge<S>(Method, const std::array<double, 12>&);        \
+  extern template RoundedTheta baseline_hinge<S>(Method, const std::array<double, 12>&);        \
   extern template std::unique_ptr<EvaluatorImpl> make_evaluator<S>(Method, const MeshInput&);
 HINGE_FOR_EACH_SCALAR(HINGE_METHODS_PER_SCALAR_EXTERN)
 #undef HINGE_METHODS_PER_SCALAR_EXTERN

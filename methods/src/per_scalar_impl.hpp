@@ -11,7 +11,7 @@
 #include "hinge/baselines/symbolic.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/reference/assemble_impl.hpp"
-#include "hinge/reference/rounded.hpp"
+#include "hinge/core/rounding.hpp"
 #include "per_scalar.hpp"
 
 namespace hinge::methods::detail {
@@ -36,9 +36,9 @@ baselines::Derivatives<Scalar> baseline_derivatives(Method method, const std::ar
 }
 
 template <HingeScalar Scalar>
-reference::RoundedTheta baseline_hinge(Method method, const std::array<double, 12>& x) {
+RoundedTheta baseline_hinge(Method method, const std::array<double, 12>& x) {
   const baselines::Derivatives<Scalar> d = baseline_derivatives<Scalar>(method, x, true);
-  return reference::round_theta(d.theta, d.grad, d.hess);
+  return round_theta(d.theta, d.grad, d.hess);
 }
 
 // The reference and the baselines: Algorithm 1 once, then the reference's hinge-by-hinge assembly
@@ -50,7 +50,7 @@ class HingeByHinge final : public EvaluatorImpl {
       : method_(method), in_(in), coefficients_(reference::rest_state<Scalar>(*in.rest, *in.topology, in.parameters)) {}
 
   void evaluate(bool) override {
-    const reference::Model model = in_.parameters.model;
+    const Model model = in_.parameters.model;
     if (method_ == Method::reference) {
       out_ = reference::assemble<Scalar>(*in_.deformed, *in_.topology, coefficients_, model, in_.request);
       return;
@@ -69,13 +69,13 @@ class HingeByHinge final : public EvaluatorImpl {
                                               return t;
                                             });
   }
-  reference::RoundedMesh take_result() override { return reference::round_mesh(std::move(out_), in_.request); }
+  RoundedMesh take_result() override { return round_mesh(std::move(out_), in_.request); }
 
  private:
   Method method_;
   MeshInput in_;
-  std::vector<reference::HingeCoefficients<Scalar>> coefficients_;
-  reference::MeshDerivatives<Scalar> out_;
+  std::vector<HingeCoefficients<Scalar>> coefficients_;
+  MeshDerivatives<Scalar> out_;
 };
 
 // fast: Algorithm 1 and the pattern once (hinge::fast::Assembler), then Algorithm 2. The last evaluation
@@ -91,7 +91,7 @@ class Fast final : public EvaluatorImpl {
 
   void evaluate(bool last) override {
     if (!assembler_) throw std::logic_error("MeshEvaluator::evaluate after the last evaluation");
-    const reference::Model model = in_.parameters.model;
+    const Model model = in_.parameters.model;
     if (last) {
       assembler_->evaluate(*in_.deformed, std::move(coefficients_), model, in_.request, in_.threads, out_);
       assembler_.reset();
@@ -99,13 +99,13 @@ class Fast final : public EvaluatorImpl {
       assembler_->evaluate(*in_.deformed, coefficients_, model, in_.request, in_.threads, out_);
     }
   }
-  reference::RoundedMesh take_result() override { return reference::round_mesh(std::move(out_), in_.request); }
+  RoundedMesh take_result() override { return round_mesh(std::move(out_), in_.request); }
 
  private:
   MeshInput in_;
   std::optional<fast::Assembler<Scalar>> assembler_;
-  std::vector<reference::HingeCoefficients<Scalar>> coefficients_;
-  reference::MeshDerivatives<Scalar> out_;
+  std::vector<HingeCoefficients<Scalar>> coefficients_;
+  MeshDerivatives<Scalar> out_;
 };
 
 template <HingeScalar Scalar>
@@ -117,7 +117,7 @@ std::unique_ptr<EvaluatorImpl> make_evaluator(Method method, const MeshInput& in
 }  // namespace hinge::methods::detail
 
 #define HINGE_METHODS_PER_SCALAR_INSTANTIATE(S)                                                               \
-  template hinge::reference::RoundedTheta hinge::methods::detail::baseline_hinge<S>(hinge::methods::Method,   \
+  template hinge::RoundedTheta hinge::methods::detail::baseline_hinge<S>(hinge::methods::Method,   \
                                                                                     const std::array<double, 12>&); \
   template std::unique_ptr<hinge::methods::detail::EvaluatorImpl> hinge::methods::detail::make_evaluator<S>(  \
       hinge::methods::Method, const hinge::methods::MeshInput&);

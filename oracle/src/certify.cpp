@@ -15,7 +15,7 @@
 #include <string>
 
 #include "hinge/oracle/oracle.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "fast_path.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"

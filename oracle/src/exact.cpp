@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
-#include "hinge/reference/errors.hpp"
-#include "hinge/reference/hinge_checks.hpp"
+#include "hinge/core/errors.hpp"
+#include "hinge/core/hinge_checks.hpp"
 #include "exact_form.hpp"
 
 namespace hinge::oracle {

@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "hinge/reference/hinge_checks.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/hinge_checks.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"
 #include "mesh_fast_path.hpp"
@@ -21,7 +21,6 @@ namespace {
 using detail::Interval;
 using detail::Rounding;
 using detail::Verdict;
-using reference::Model;
 
 struct PsiEnclosure {
   Interval value, d1, d2;  // psi, psi', psi''
@@ -39,7 +38,7 @@ PsiEnclosure psi(Model model, const Interval& k, const Interval& kd, const Inter
     }
     case Model::tan:
     case Model::viscoelastic: {  // eq. (8): psi = k a (phi - phi_bar)^2, phi = 2 t, t = tan(theta / 2)
-      if (angle.branch_cut) reference::throw_infinite_energy(model);
+      if (angle.branch_cut) throw_infinite_energy(model);
       const Interval& t = angle.tan_half;
       const Interval one(1.0);
       const Interval dphi = one + t * t, d2phi = t * dphi;
@@ -79,12 +78,12 @@ std::string entry_name(Eigen::Index r, Eigen::Index c) {
 }  // namespace
 
 CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
-                             const reference::EnergyParameters& parameters, unsigned request, const Options& options) {
+                             const EnergyParameters& parameters, unsigned request, const Options& options) {
   check_same_mesh(deformed, topology, "deformed");
   check_same_mesh(rest, topology, "rest");
   if (options.fast_path)
     if (std::optional<CertifiedMesh> fast = detail::fast_mesh(deformed, rest, topology, parameters, request)) return *fast;
-  const bool want_grad = request & reference::want_gradient, want_hess = request & reference::want_hessian;
+  const bool want_grad = request & want_gradient, want_hess = request & want_hessian;
   const Model model = parameters.model;
   const auto hinge_count = static_cast<Index>(topology.hinges.size());
   const Eigen::Index n = 3 * static_cast<Eigen::Index>(topology.vertex_count);
@@ -99,7 +98,7 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
     for_hinge(topology, i, [&] {
       rest_exact.push_back(exact_hinge(hinge_coordinates(rest, topology.hinges[i]), false));
       const ExactHinge& r = rest_exact.back();
-      if (reference::infinite_at_pi(model) && sgn(r.Y) == 0 && sgn(r.X) < 0) reference::throw_folded_rest(model);
+      if (infinite_at_pi(model) && sgn(r.Y) == 0 && sgn(r.X) < 0) throw_folded_rest(model);
     });
   for (Index i = 0; i < hinge_count; ++i)
     for_hinge(topology, i, [&] {

@@ -10,14 +10,13 @@
 
 #include "fast_path.hpp"
 #include "hinge/oracle/exact.hpp"
-#include "hinge/reference/hinge_checks.hpp"
+#include "hinge/core/hinge_checks.hpp"
 #include "hinge_intervals.hpp"
 #include "mesh_scatter.hpp"
 
 namespace hinge::oracle::detail {
 namespace {
 
-using reference::Model;
 
 struct PsiBounded {
   Bounded value, d1, d2;  // psi, psi', psi''
@@ -60,10 +59,10 @@ std::optional<bool> equal_angles(Model model, const BoundedHinge& h, const Bound
 }  // namespace
 
 std::optional<CertifiedMesh> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
-                                       const reference::EnergyParameters& parameters, unsigned request) {
+                                       const EnergyParameters& parameters, unsigned request) {
   const Model model = parameters.model;
   if (model != Model::shells && model != Model::tan && model != Model::viscoelastic) return std::nullopt;
-  const bool want_grad = request & reference::want_gradient, want_hess = request & reference::want_hessian;
+  const bool want_grad = request & want_gradient, want_hess = request & want_hessian;
   const Eigen::Index n = 3 * static_cast<Eigen::Index>(topology.vertex_count);
   Bounded energy;
   std::vector<Bounded> gradient(want_grad ? static_cast<std::size_t>(n) : 0);

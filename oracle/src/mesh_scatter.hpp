@@ -9,7 +9,7 @@
 
 #include <Eigen/SparseCore>
 
-#include "hinge/reference/mesh.hpp"
+#include "hinge/core/mesh.hpp"
 
 namespace hinge::oracle::detail {
 

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -18,9 +19,10 @@
 #include "hinge/fast/faithful.hpp"
 #include "hinge/methods/methods.hpp"
 #include "hinge/oracle/oracle.hpp"
-#include "hinge/oracle/output_line.hpp"
-#include "hinge/reference/errors.hpp"
-#include "hinge/reference/mesh.hpp"
+#include "hinge/conformance/certified_line.hpp"
+#include "hinge/core/bending_problem.hpp"
+#include "hinge/core/errors.hpp"
+#include "hinge/core/mesh.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -123,13 +125,14 @@ double as_number(const py::object& o, const char* what) {
     throw py::value_error(std::string(what) + " must be a number: " + e.what());
   }
 }
-int as_count(const py::object& o, const char* what, int largest) {
+// An integer argument (its range is checked by the caller); a ValueError naming it for any other type.
+long long as_integer(const py::object& o, const char* what) {
   if (py::isinstance<py::bool_>(o) || !py::hasattr(o, "__index__"))
     throw py::value_error(std::string(what) + " must be an integer; got " + std::string(py::str(py::type::of(o).attr("__name__"))));
   const py::int_ value(o);
-  if (value < py::int_(0) || value > py::int_(largest))
-    throw py::value_error(std::string(what) + " must be in [0, " + std::to_string(largest) + "]");
-  return value.cast<int>();
+  const py::int_ largest(std::numeric_limits<long long>::max()), smallest(std::numeric_limits<long long>::min());
+  return value > largest ? std::numeric_limits<long long>::max() : value < smallest ? std::numeric_limits<long long>::min()
+                                                                                    : value.cast<long long>();
 }
 hinge::methods::Method as_method(const py::object& o) {
   return parsed([&] { return hinge::methods::parse_method(as_name(o, "method")); });
@@ -239,14 +242,12 @@ py::tuple hessian(const py::object& vertices, const py::object& faces_object, co
                   const py::object& threads_object, const py::object& scalar_name, bool allow_no_hinges) {
   const auto method = as_method(method_name);
   const auto scalar = as_scalar(scalar_name);
-  hinge::reference::EnergyParameters parameters;
-  parameters.model = parsed([&] { return hinge::reference::parse_model(as_name(energy, "energy")); });
-  if (parameters.model == hinge::reference::Model::viscoelastic)
-    throw py::value_error("energy 'viscoelastic' is available from the C++ library, not from this function");
   const double k = as_number(k_object, "k");
-  if (!std::isfinite(k) || k < 0) throw py::value_error("k must be finite and >= 0");
-  parameters.k = k;
-  const int threads = as_count(threads_object, "threads", 4096);  // 0: all cores
+  const std::string energy_name = as_name(energy, "energy");
+  const hinge::EnergyParameters parameters =
+      parsed([&] { return hinge::bending_problem({k, "k="}, energy_name, "energy=").parameters(); });
+  const long long requested_threads = as_integer(threads_object, "threads");
+  const int threads = parsed([&] { return hinge::resolve_threads(requested_threads, "threads="); });
   hinge::Mesh deformed;
   deformed.vertices = as_vertices(vertices, "vertices");
   deformed.faces = as_faces(faces_object, deformed.vertices.size());
@@ -259,19 +260,14 @@ py::tuple hessian(const py::object& vertices, const py::object& faces_object, co
                             std::to_string(deformed.vertices.size()));
     rest->faces = deformed.faces;
   }
-  hinge::reference::RoundedMesh result;
+  hinge::RoundedMesh result;
   try {
     py::gil_scoped_release release;
     const auto lock = lock_if_mpfr(scalar);
     const hinge::Topology topology = hinge::build_topology(deformed);
-    if (topology.hinges.empty() && !allow_no_hinges)
-      throw hinge::InputError("the mesh has no interior edge, so its bending energy is 0 whatever its shape"
-                              " (allow_no_hinges=True if that is meant)");
-    hinge::check_faces_nondegenerate(deformed);
-    if (rest) hinge::check_faces_nondegenerate(*rest);
-    hinge::methods::MeshInput input{&deformed, rest ? &*rest : &deformed, &topology, parameters,
-                                    hinge::reference::want_all,
-                                    threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))};
+    hinge::check_bending_mesh(topology, deformed, rest ? &*rest : nullptr,
+                              {"", "rest=", "allow_no_hinges=True", allow_no_hinges});
+    hinge::methods::MeshInput input{&deformed, rest ? &*rest : &deformed, &topology, parameters, hinge::want_all, threads};
     result = hinge::methods::evaluate_mesh(method, scalar, input);
   } catch (const hinge::InputError& e) {
     throw py::value_error(e.what());
@@ -327,7 +323,7 @@ py::tuple stream(const std::string& command, const py::bytes& input, long first_
             const auto c = hinge::oracle::certified_theta_derivatives(x, options);
             flagged_outputs += c.uncertified.size();
             flagged_hinges += c.uncertified.empty() ? 0 : 1;
-            return hinge::oracle::certified_line(id, c, report_precision);
+            return hinge::conformance::certified_line(id, c, report_precision);
           },
           [] {});
   }

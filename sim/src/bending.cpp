@@ -16,25 +16,22 @@
 #include "hinge/fast/assemble.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::sim::detail {
 namespace {
 
-using reference::Model;
 using Mat12 = Eigen::Matrix<double, 12, 12>;
 
 class BendingEffect final : public Effect {
  public:
   BendingEffect(const Context& c, const Bending& b, const Damping* damping)
       : topology_(*c.topology), sparsity_(*c.sparsity), treatment_(c.scene->solve.hessian),
-        method_(methods::parse_method(b.method)), scalar_(parse_scalar_type(b.scalar)),
-        direct_(method_ == methods::Method::fast && b.scalar == "double"), threads_(c.threads),
+        method_(b.method), scalar_(b.scalar),
+        direct_(b.method == methods::Method::fast && b.scalar.kind == ScalarType::Kind::kind_double), threads_(c.threads),
         assembler_(topology_), rest_(c.scene->rest), mesh_(c.scene->mesh), file_(c.scene->file) {
-    const Material& m = c.scene->material;
     parameters_.model = b.energy;
-    // eq. (11); three times a plate's stiffness in cylindrical bending: proofs/errata.md E8
-    parameters_.k = b.k ? *b.k : reference::bending_stiffness(m.young, m.poisson, m.thickness);
+    parameters_.k = b.k;  // given, or eq. (11) from the material: the scene reader decided
     if (damping && damping->bending > 0) {  // section 5: the viscoelastic model
       parameters_.model = Model::viscoelastic;
       parameters_.k_d_over_dt = damping->bending * parameters_.k / c.dt;
@@ -68,7 +65,7 @@ class BendingEffect final : public Effect {
     set_mesh(x);
     const Model elastic = parameters_.model == Model::viscoelastic ? Model::tan : parameters_.model;
     if (direct_) {
-      assembler_.evaluate(mesh_, coefficients_, elastic, reference::want_energy, threads_, result_);
+      assembler_.evaluate(mesh_, coefficients_, elastic, want_energy, threads_, result_);
       return result_.energy;
     }
     double e = 0;
@@ -110,7 +107,7 @@ class BendingEffect final : public Effect {
       it = evaluators_.emplace(request, std::make_unique<methods::MeshEvaluator>(method_, scalar_, input)).first;
     }
     it->second->evaluate();
-    const reference::RoundedMesh r = it->second->take_result();
+    const RoundedMesh r = it->second->take_result();
     add_result(out, r.energy, r.gradient.data(), r.hessian);
   }
 
@@ -132,26 +129,26 @@ class BendingEffect final : public Effect {
   }
 
   // theta and its derivatives for hinge i at the current mesh, by the scene's method.
-  reference::Psi<double> hinge_psi(std::size_t i, Model model, bool want_hessian) {
+  Psi<double> hinge_psi(std::size_t i, Model model, bool want_hessian) {
     const auto x = hinge_coordinates(mesh_, topology_.hinges[i]);
     if (direct_) {
       d_ = fast::hinge_derivatives<double>(x, want_hessian);
     } else {
-      const reference::RoundedTheta r = methods::evaluate_hinge(method_, scalar_, x);
+      const RoundedTheta r = methods::evaluate_hinge(method_, scalar_, x);
       d_.theta = r.theta;
       d_.on_branch_cut = r.theta == M_PI;
       d_.tan_half_theta = d_.on_branch_cut ? INFINITY : std::tan(r.theta / 2);
       d_.grad = Eigen::Map<const Eigen::Matrix<double, 12, 1>>(r.grad.data());
       d_.hess = Eigen::Map<const Eigen::Matrix<double, 12, 12, Eigen::RowMajor>>(r.hess.data());
     }
-    return reference::psi(model, coefficients_[i], reference::BendAngle<double>{d_.theta, d_.tan_half_theta, d_.on_branch_cut});
+    return psi(model, coefficients_[i], BendAngle<double>{d_.theta, d_.tan_half_theta, d_.on_branch_cut});
   }
 
   // projected and gauss-newton: hinge by hinge.
   void add_per_hinge(const Eigen::VectorXd&, Evaluation& out) {
     const bool hessian = out.request & 4u, gauss_newton = treatment_ == HessianTreatment::gauss_newton;
     for (std::size_t i = 0; i < topology_.hinges.size(); ++i) {
-      const reference::Psi<double> p = hinge_psi(i, parameters_.model, hessian && !gauss_newton);
+      const Psi<double> p = hinge_psi(i, parameters_.model, hessian && !gauss_newton);
       if (out.request & 1u) out.energy += p.value;
       const auto& x = topology_.hinges[i].x;
       if (out.request & 2u)
@@ -173,10 +170,10 @@ class BendingEffect final : public Effect {
   ScalarType scalar_;
   bool direct_;  // fast in double: hinge::fast's own entry points, no rounding step
   int threads_;
-  reference::EnergyParameters parameters_;
+  EnergyParameters parameters_;
   fast::Assembler<double> assembler_;
-  std::vector<reference::HingeCoefficients<double>> coefficients_;
-  reference::MeshDerivatives<double> result_;
+  std::vector<HingeCoefficients<double>> coefficients_;
+  MeshDerivatives<double> result_;
   std::map<unsigned, std::unique_ptr<methods::MeshEvaluator>> evaluators_;
   std::vector<Slot> map_;
   std::vector<std::vector<Slot>> hinge_slots_;

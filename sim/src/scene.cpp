@@ -10,10 +10,11 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "hinge/core/bending_problem.hpp"
+#include "hinge/core/errors.hpp"
+#include "hinge/core/scalar.hpp"
 #include "hinge/io/obj.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/reference/errors.hpp"
-#include "hinge/reference/scalar.hpp"
 
 namespace hinge::sim {
 
@@ -34,6 +35,21 @@ class Object {
     throw InputError(file_ + ": " + (key.empty() ? std::string() : key + ": ") + why);
   }
   std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  // The bending problem's checks (hinge/core/bending_problem.hpp) on `key`, named by its path: "FILE: KEY: why",
+  // the sentence the command line and Python say with their own name for the parameter.
+  template <class Check>
+  auto checked(Check&& check) const {
+    try {
+      return check();
+    } catch (const ParameterError& e) {
+      throw InputError(file_ + ": " + e.what());
+    }
+  }
+  double checked_number(const std::string& key, double (*check)(Parameter)) {
+    const double value = number(key);
+    const std::string path = key_path(key);
+    return checked([&] { return check({value, path}); });
+  }
 
   bool has(const std::string& key) const { return value_.contains(key); }
   const json* optional(const std::string& key) {
@@ -237,13 +253,9 @@ Scene read_scene(const std::string& path) {
     Object m = top.object("material");
     m.allow({"density", "young", "poisson", "thickness"});
     s.material.density = m.positive("density");
-    s.material.thickness = m.positive("thickness");
-    if (m.has("young")) s.material.young = m.positive("young");
-    if (m.has("poisson")) {
-      s.material.poisson = m.number("poisson");
-      if (!(s.material.poisson >= 0 && s.material.poisson < 0.5))
-        m.fail_at("material.poisson", "expected a number in [0, 0.5), got " + m.required("poisson").dump());
-    }
+    s.material.thickness = m.checked_number("thickness", check_thickness);
+    if (m.has("young")) s.material.young = m.checked_number("young", check_young);
+    if (m.has("poisson")) s.material.poisson = m.checked_number("poisson", check_poisson);
     m.done();
   }
 
@@ -302,21 +314,29 @@ Scene read_scene(const std::string& path) {
       Object e = fx.object("bending");
       e.allow({"energy", "k", "method", "scalar"});
       Bending b;
-      b.energy = reference::parse_model(e.choice("energy", {"tan", "shells", "willmore", "bridson"}));
-      if (e.has("k")) b.k = e.positive("k");
-      else if (!(s.material.young > 0)) fx.fail_at("material.young", "required by effects.bending without \"k\" (eq. (11))");
+      const std::string energy = e.string("energy"), energy_path = e.key_path("energy");
+      b.energy = e.checked([&] { return parse_bending_energy(energy, energy_path); });
+      if (e.has("k")) {
+        b.k = e.checked_number("k", check_k);
+      } else {
+        if (!(s.material.young > 0)) fx.fail_at("material.young", "required by effects.bending without \"k\" (eq. (11))");
+        b.k = e.checked([&] {
+          return stiffness_from_material({s.material.young, "material.young"}, {s.material.poisson, "material.poisson"},
+                                         {s.material.thickness, "material.thickness"});
+        });
+      }
       if (e.has("method")) {
-        b.method = e.string("method");
+        const std::string method = e.string("method");
         try {
-          methods::parse_method(b.method);
+          b.method = methods::parse_method(method);
         } catch (const std::invalid_argument& err) {
           e.fail_at(e.key_path("method"), err.what());
         }
       }
       if (e.has("scalar")) {
-        b.scalar = e.string("scalar");
+        const std::string scalar = e.string("scalar");
         try {
-          parse_scalar_type(b.scalar);
+          b.scalar = parse_scalar_type(scalar);
         } catch (const std::invalid_argument& err) {
           e.fail_at(e.key_path("scalar"), err.what());
         }
@@ -341,9 +361,9 @@ Scene read_scene(const std::string& path) {
       if (!(d.mass > 0 || d.bending > 0)) fx.fail_at("effects.damping", "needs \"mass\" or \"bending\" above 0");
       if (s.solve.mode != Mode::dynamic) fx.fail_at("effects.damping", "only with \"mode\": \"dynamic\" (a static solve has no velocity)");
       if (d.bending > 0) {
-        if (!s.bending || s.bending->energy != reference::Model::tan)
+        if (!s.bending || s.bending->energy != Model::tan)
           fx.fail_at("effects.damping.bending", "needs effects.bending with \"energy\": \"tan\" (the paper's section 5 is written for it)");
-        if (s.solve.hessian == HessianTreatment::exact && (s.bending->method != "fast" || s.bending->scalar != "double"))
+        if (s.solve.hessian == HessianTreatment::exact && (s.bending->method != methods::Method::fast || s.bending->scalar.kind != ScalarType::Kind::kind_double))
           fx.fail_at("effects.damping.bending", "with \"hessian\": \"exact\" needs the bending method fast in double");
       }
       s.damping = d;

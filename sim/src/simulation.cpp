@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "hinge/reference/errors.hpp"
-#include "hinge/reference/results.hpp"
+#include "hinge/core/errors.hpp"
+#include "hinge/core/results.hpp"
 #include "hinge/sim/effect.hpp"
 #include "hinge/sim/linear_solver.hpp"
 #include "hinge/sim/system.hpp"
@@ -173,7 +173,7 @@ class Run {
 
   double energy_at(const Eigen::VectorXd& x, const Inertia* inertia) {
     try {
-      const double e = evaluate(x, reference::want_energy, inertia).energy;
+      const double e = evaluate(x, want_energy, inertia).energy;
       return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
     } catch (const DomainError&) {  // tan at theta = pi, a vertex on the sphere
       return std::numeric_limits<double>::infinity();
@@ -196,7 +196,7 @@ class Run {
       ++summary_.newton_iterations;
       Evaluation* evaluated = nullptr;
       try {
-        evaluated = &evaluate(x_, reference::want_all, inertia);
+        evaluated = &evaluate(x_, want_all, inertia);
       } catch (const std::exception& e) {  // not expected: every accepted state had a finite potential
         throw Failure{std::string("the potential cannot be evaluated at the current state: ") + e.what()};
       }

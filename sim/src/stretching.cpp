@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "effects_internal.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::sim::detail {
 namespace {

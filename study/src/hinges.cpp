@@ -6,19 +6,19 @@
 #include <random>
 
 #include "hinge/io/jsonl.hpp"
-#include "hinge/oracle/conformance.hpp"
-#include "hinge/reference/errors.hpp"
-#include "hinge/reference/samples.hpp"
+#include "hinge/conformance/inputs.hpp"
+#include "hinge/core/errors.hpp"
+#include "hinge/reference/evaluate.hpp"
 #include "hinge/study/study.hpp"
 
 namespace hinge::study {
 
 std::vector<StudyHinge> builtin_hinges(bool quick) {
   std::vector<StudyHinge> hinges;
-  for (auto& c : oracle::conformance::inputs()) hinges.push_back({c.id, c.category, c.x});
+  for (auto& c : conformance::inputs()) hinges.push_back({c.id, c.category, c.x});
   if (!quick) {
     int i = 0;
-    for (const auto& x : well_shaped_hinges(2000, 7)) hinges.push_back({"well-shaped/random-" + std::to_string(i++), "well-shaped", x});
+    for (const auto& x : reference::well_shaped_hinges(2000, 7)) hinges.push_back({"well-shaped/random-" + std::to_string(i++), "well-shaped", x});
   }
   return hinges;
 }

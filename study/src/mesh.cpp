@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "hinge/reference/samples.hpp"
+#include "hinge/core/samples.hpp"
 #include "hinge/study/measure.hpp"
 #include "study_internal.hpp"
 
@@ -25,9 +25,9 @@ MeshRow measure_mesh(methods::Method method, const ScalarType& scalar, const std
   for (const int n : sizes) {
     // The next size costs about (n / last_n)^2 times the last one's evaluation, min_runs + 1 times.
     if (last_n && since(start) + (min_runs + 1) * last * std::pow(double(n) / last_n, 2) > budget) break;
-    const Mesh rest = cloth(n, 1), deformed = cloth(n, 2);  // the benchmark's cloth (hinge/reference/samples.hpp)
+    const Mesh rest = cloth(n, 1), deformed = cloth(n, 2);  // the benchmark's cloth (hinge/core/samples.hpp)
     const Topology topology = build_topology(rest);
-    const methods::MeshInput input{&deformed, &rest, &topology, {reference::Model::tan, 1.0, 0}, reference::want_all, 1};
+    const methods::MeshInput input{&deformed, &rest, &topology, {Model::tan, 1.0, 0}, want_all, 1};
     methods::MeshEvaluator evaluator(method, scalar, input);
     evaluator.evaluate();  // warm-up: first-touch of the work arrays and the matrix
     std::vector<double> runs;

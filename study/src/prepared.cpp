@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::study::detail {
 namespace {

@@ -13,7 +13,6 @@
 #include <string>
 
 #include "build_info.hpp"
-#include "hinge/oracle/conformance.hpp"
 #include "hinge/study/measure.hpp"
 #include "study_internal.hpp"
 

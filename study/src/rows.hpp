@@ -17,7 +17,7 @@
 #include "hinge/baselines/autodiff.hpp"
 #include "hinge/baselines/symbolic.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
-#include "hinge/oracle/conformance.hpp"
+#include "hinge/conformance/grading.hpp"
 #include "hinge/reference/rounded.hpp"
 #include "prepared.hpp"
 
@@ -162,17 +162,17 @@ Row measure_row(methods::Method method, const ScalarType& scalar, const Prepared
       ++row.failed;
       continue;
     }
-    reference::RoundedTheta rounded;
+    RoundedTheta rounded;
     try {
       if (!finite(*r)) throw DomainError("not finite");
-      rounded = reference::round_theta(r->theta, r->grad, r->hess);
+      rounded = round_theta(r->theta, r->grad, r->hess);
     } catch (const DomainError&) {  // a NaN, an infinity, or a value outside the range of double
       ++row.nonfinite;
       continue;
     }
     const oracle::CertifiedTheta& c = p.certified[i];
     auto& e = rounded_errors[h.category];
-    namespace conf = oracle::conformance;
+    namespace conf = conformance;
     e[0].push_back(conf::normwise_error(&rounded.theta, &c.theta, 1, p.scale[i][0]));
     e[1].push_back(conf::normwise_error(rounded.grad.data(), c.grad.data(), 12, p.scale[i][1]));
     e[2].push_back(conf::normwise_error(rounded.hess.data(), c.hess.data(), 144, p.scale[i][2]));
@@ -251,3 +251,8 @@ HINGE_FOR_EACH_SCALAR(HINGE_STUDY_ROW_EXTERN)
 #undef HINGE_STUDY_ROW_EXTERN
 
 }  // namespace hinge::study::detail
+
+// For the generated instantiation units (hinge_scalar_units in study/CMakeLists.txt), one per scalar family.
+#define HINGE_STUDY_ROW_INSTANTIATE(S) \
+  template hinge::study::Row hinge::study::detail::measure_row<S>(                               \
+      hinge::methods::Method, const hinge::ScalarType&, const hinge::study::detail::Prepared&, double, bool);

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "hinge/reference/samples.hpp"
+#include "hinge/reference/evaluate.hpp"
 #include "hinge/study/measure.hpp"
 #include "rows.hpp"
 #include "study_internal.hpp"
@@ -94,7 +94,7 @@ Study run(const Options& o) {
 
   const bool builtin = o.hinges.empty();
   std::vector<std::array<double, 12>> timing;
-  if (builtin) timing = well_shaped_hinges(256, 2013);  // the common case; the user's own hinges otherwise
+  if (builtin) timing = reference::well_shaped_hinges(256, 2013);  // the common case; the user's own hinges otherwise
   const detail::Prepared p(builtin ? builtin_hinges(o.quick) : o.hinges, std::move(timing), o.progress);
   s.hinges = p.hinges.size();
   s.skipped = p.skipped;

@@ -17,7 +17,6 @@
 namespace hinge::oracle {
 namespace {
 
-using reference::Model;
 
 TEST(FastMeshOracle, NormwiseWithinFourUnitsAndTwoInTheMedian) {
   struct Case {
@@ -35,7 +34,7 @@ TEST(FastMeshOracle, NormwiseWithinFourUnitsAndTwoInTheMedian) {
   for (const Case& c : cases)
     for (Model model : {Model::tan, Model::shells}) {
       const Topology t = build_topology(c.rest);
-      reference::EnergyParameters p;
+      EnergyParameters p;
       p.model = model;
       p.k = 0.75;
       const CertifiedMesh exact = certified_mesh(c.deformed, c.rest, t, p);
@@ -44,8 +43,8 @@ TEST(FastMeshOracle, NormwiseWithinFourUnitsAndTwoInTheMedian) {
       const auto f = a.evaluate(c.deformed, a.rest_state(c.rest, p), model);
       const double e = test::sparse_units(f.hessian, exact.rounded.hessian, 0x1p-53);
       errors.push_back(e);
-      EXPECT_LE(e, 4) << c.name << " " << reference::model_name(model);
-      RecordProperty(c.name + " " + std::string(reference::model_name(model)), std::to_string(e));
+      EXPECT_LE(e, 4) << c.name << " " << model_name(model);
+      RecordProperty(c.name + " " + std::string(model_name(model)), std::to_string(e));
     }
   std::sort(errors.begin(), errors.end());
   EXPECT_LE(errors[errors.size() / 2], 2) << "median normwise error, units of 2^-53";

@@ -5,15 +5,14 @@
 #include <cmath>
 #include <map>
 
-#include "hinge/oracle/conformance.hpp"
+#include "hinge/conformance/inputs.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/reference/rounded.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace hinge::oracle {
 namespace {
 
-using reference::Model;
 
 std::map<std::pair<Eigen::Index, Eigen::Index>, double> entries(const Eigen::SparseMatrix<double>& m) {
   std::map<std::pair<Eigen::Index, Eigen::Index>, double> e;
@@ -26,13 +25,13 @@ TEST(MeshOracle, AgreesWithTheReferenceAt1024Bits) {
   for (const auto& m : conformance::meshes())
     for (Model model : {Model::shells, Model::tan, Model::willmore, Model::bridson}) {
       const Topology t = build_topology(m.deformed);
-      reference::EnergyParameters p;
+      EnergyParameters p;
       p.model = model;
       p.k = 0.75;
       const CertifiedMesh c = certified_mesh(m.deformed, m.rest, t, p);
-      const reference::RoundedMesh r =
+      const RoundedMesh r =
           reference::assemble_rounded({ScalarType::Kind::kind_mpfr, 1024}, m.deformed, m.rest, t, p);
-      const std::string what = m.name + " " + std::string(reference::model_name(model));
+      const std::string what = m.name + " " + std::string(model_name(model));
       EXPECT_TRUE(c.uncertified.empty()) << what;
       EXPECT_EQ(c.rounded.energy, r.energy) << what;
       ASSERT_EQ(c.rounded.gradient.size(), r.gradient.size()) << what;
@@ -55,11 +54,11 @@ TEST(MeshOracle, AtRestTheEnergyAndGradientAreExactlyZero) {
   for (const auto& m : conformance::meshes()) {
     const Topology t = build_topology(m.deformed);
     for (Model model : {Model::shells, Model::tan}) {
-      reference::EnergyParameters p;
+      EnergyParameters p;
       p.model = model;
       Options enclosures;  // the enclosures' machinery at rest (the fast path: oracle_fast_path_test)
       enclosures.fast_path = false;
-      const CertifiedMesh c = certified_mesh(m.deformed, m.deformed, t, p, reference::want_all, enclosures);
+      const CertifiedMesh c = certified_mesh(m.deformed, m.deformed, t, p, want_all, enclosures);
       EXPECT_EQ(c.rounded.energy, 0.0) << m.name;
       for (double g : c.rounded.gradient) EXPECT_EQ(g, 0.0) << m.name;
       EXPECT_TRUE(c.uncertified.empty()) << m.name;
@@ -75,7 +74,7 @@ TEST(MeshOracle, TanEnergyOnAFoldedHingeIsAnError) {
   Mesh rest = m;
   rest.vertices[3] = {0.5, -1, 0};
   const Topology t = build_topology(m);
-  reference::EnergyParameters p;
+  EnergyParameters p;
   p.model = Model::tan;
   EXPECT_THROW(certified_mesh(m, rest, t, p), DomainError);
   p.model = Model::shells;

@@ -9,11 +9,12 @@
 #include <numbers>
 #include <string>
 
-#include "hinge/oracle/conformance.hpp"
+#include "hinge/conformance/inputs.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
-#include "hinge/reference/errors.hpp"
-#include "hinge/reference/samples.hpp"
+#include "hinge/core/errors.hpp"
+#include "hinge/core/samples.hpp"
+#include "hinge/reference/evaluate.hpp"
 #include "support/same_results.hpp"
 
 namespace hinge::oracle {
@@ -71,7 +72,7 @@ TEST(OracleFastPath, DecidesAlmostEveryWellShapedHingeAlone) {
   // On a well-shaped hinge every bound is a few thousand units of 2^-106 of its output, so an output is left
   // open only within about 2^-90 of a midpoint between doubles: about 157 * 2^-37 of hinges. Asked: 99.5%
   // (measured: every one of 2000 here, and of 40000 random hinges in [-1, 1]^12).
-  const auto hinges = well_shaped_hinges(2000, 11);
+  const auto hinges = reference::well_shaped_hinges(2000, 11);
   int fast = 0;
   for (const auto& x : hinges) fast += certified_theta_derivatives(x).path == Path::fast;
   EXPECT_GE(fast, 1990);
@@ -124,18 +125,18 @@ TEST(OracleFastPath, MeshFastPathGivesTheEnclosuresDoubles) {
   int fast = 0;
   for (const Case& m : cases) {
     const Topology t = build_topology(m.deformed);
-    for (reference::Model model :
-         {reference::Model::shells, reference::Model::tan, reference::Model::viscoelastic, reference::Model::willmore}) {
-      reference::EnergyParameters p;
+    for (Model model :
+         {Model::shells, Model::tan, Model::viscoelastic, Model::willmore}) {
+      EnergyParameters p;
       p.model = model;
       p.k = 0.75;
       p.k_d_over_dt = 0.125;
       const CertifiedMesh with = certified_mesh(m.deformed, m.rest, t, p);
-      const CertifiedMesh without = certified_mesh(m.deformed, m.rest, t, p, reference::want_all, without_fast_path());
-      EXPECT_EQ("", test::first_difference(with, without)) << m.name << " " << reference::model_name(model);
+      const CertifiedMesh without = certified_mesh(m.deformed, m.rest, t, p, want_all, without_fast_path());
+      EXPECT_EQ("", test::first_difference(with, without)) << m.name << " " << model_name(model);
       EXPECT_GT(without.bits, 0u);
       fast += with.bits == 0;
-      if (model == reference::Model::willmore) {
+      if (model == Model::willmore) {
         EXPECT_GT(with.bits, 0u);  // sines: not in the fast path
       }
     }
@@ -149,19 +150,19 @@ TEST(OracleFastPath, MeshAtRestIsDecidedWithTheExactTestOfEqualAngles) {
   // so psi' is exactly zero, and the energy and gradient with it.
   const Mesh m = cloth(11, 2);
   const Topology t = build_topology(m);
-  for (reference::Model model : {reference::Model::shells, reference::Model::tan}) {
-    reference::EnergyParameters p;
+  for (Model model : {Model::shells, Model::tan}) {
+    EnergyParameters p;
     p.model = model;
     const CertifiedMesh c = certified_mesh(m, m, t, p);
     EXPECT_EQ(c.bits, 0u);
     EXPECT_EQ(c.rounded.energy, 0.0);
     for (double g : c.rounded.gradient) EXPECT_EQ(g, 0.0);
-    EXPECT_EQ("", test::first_difference(c, certified_mesh(m, m, t, p, reference::want_all, without_fast_path())));
+    EXPECT_EQ("", test::first_difference(c, certified_mesh(m, m, t, p, want_all, without_fast_path())));
   }
 }
 
 TEST(OracleFastPath, ReportsWhatItDidNotRun) {
-  const CertifiedTheta c = certified_theta_derivatives(well_shaped_hinges(1, 3)[0]);
+  const CertifiedTheta c = certified_theta_derivatives(reference::well_shaped_hinges(1, 3)[0]);
   ASSERT_EQ(c.path, Path::fast);
   EXPECT_EQ(c.bits, 0u);
   EXPECT_EQ(c.exact_bits, 0u);

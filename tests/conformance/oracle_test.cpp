@@ -12,9 +12,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "hinge/oracle/conformance.hpp"
+#include "hinge/conformance/inputs.hpp"
 #include "hinge/oracle/oracle.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/reference/rounded.hpp"
 
 namespace hinge::oracle {
@@ -48,7 +48,7 @@ std::vector<double> outputs(const CertifiedTheta& c) {
   v.insert(v.end(), c.hess.begin(), c.hess.end());
   return v;
 }
-std::vector<double> outputs(const reference::RoundedTheta& r) {
+std::vector<double> outputs(const RoundedTheta& r) {
   std::vector<double> v{r.theta};
   v.insert(v.end(), r.grad.begin(), r.grad.end());
   v.insert(v.end(), r.hess.begin(), r.hess.end());

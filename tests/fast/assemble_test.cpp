@@ -20,7 +20,6 @@
 namespace hinge::fast {
 namespace {
 
-using reference::Model;
 
 constexpr double u = 0x1p-53;
 
@@ -29,10 +28,10 @@ TEST(Assemble, FastMatchesReferenceInDouble) {
   const Topology t = build_topology(rest);
   for (Model model : {Model::tan, Model::shells, Model::willmore, Model::bridson})
     for (EdgeOrientation o : {EdgeOrientation::first_face, EdgeOrientation::second_face}) {
-      const std::string what = std::string(reference::model_name(model)) + (o == EdgeOrientation::first_face ? " first" : " second");
+      const std::string what = std::string(model_name(model)) + (o == EdgeOrientation::first_face ? " first" : " second");
       Assembler<double> a(t, o);
       const auto c = reference::rest_state<double>(rest, t, {model, 0.7, 0});  // the same coefficients for both
-      const auto f = a.evaluate(deformed, c, model, reference::want_all, 2);
+      const auto f = a.evaluate(deformed, c, model, want_all, 2);
       const auto r = reference::assemble<double>(deformed, t, c, model);
       // The same pattern, entry for entry (pattern.hpp).
       ASSERT_EQ(f.hessian.nonZeros(), r.hessian.nonZeros()) << what;
@@ -90,7 +89,7 @@ TEST(Assemble, Bin128MatchesReferenceBin128) {
   const Topology t = build_topology(rest);
   const auto c = reference::rest_state<bin128>(rest, t, {Model::tan, 0.7, 0});
   Assembler<bin128> a(t);
-  const auto f = a.evaluate(deformed, c, Model::tan, reference::want_all, 1);
+  const auto f = a.evaluate(deformed, c, Model::tan, want_all, 1);
   const auto r = reference::assemble<bin128>(deformed, t, c, Model::tan);
   const double ub = test::unit_roundoff_double<bin128>();
   EXPECT_LE(test::sparse_units(f.hessian, r.hessian, ub), 64);
@@ -122,9 +121,9 @@ TEST(Assemble, ThreadsGiveIdenticalBytes) {
   const Topology t = build_topology(rest);
   Assembler<double> a(t);
   const auto c = a.rest_state(rest, {Model::tan, 1.0, 0}, 1);
-  const auto one = a.evaluate(deformed, c, Model::tan, reference::want_all, 1);
+  const auto one = a.evaluate(deformed, c, Model::tan, want_all, 1);
   for (int threads : {2, 3, 4, 7}) {
-    const auto many = a.evaluate(deformed, c, Model::tan, reference::want_all, threads);
+    const auto many = a.evaluate(deformed, c, Model::tan, want_all, threads);
     EXPECT_EQ(std::memcmp(&one.energy, &many.energy, sizeof(double)), 0) << threads;
     ASSERT_EQ(one.gradient.size(), many.gradient.size());
     EXPECT_EQ(std::memcmp(one.gradient.data(), many.gradient.data(), sizeof(double) * one.gradient.size()), 0) << threads;
@@ -151,7 +150,7 @@ struct Bytes {
   double energy = 0;
   std::vector<double> gradient, values;
   std::vector<int> inner;
-  explicit Bytes(const reference::MeshDerivatives<double>& m)
+  explicit Bytes(const MeshDerivatives<double>& m)
       : energy(m.energy),
         gradient(m.gradient.data(), m.gradient.data() + m.gradient.size()),
         values(m.hessian.valuePtr(), m.hessian.valuePtr() + m.hessian.nonZeros()),
@@ -196,24 +195,24 @@ TEST(Assemble, ThreadCountsOneToSevenGiveIdenticalBytes) {
     const Topology t = build_topology(rest);
     Assembler<double> a(t);
     const auto c = a.rest_state(rest, {Model::tan, 1.0, 0}, 1);
-    const Bytes one(a.evaluate(deformed, c, Model::tan, reference::want_all, 1));
-    const Bytes one_gradient(a.evaluate(deformed, c, Model::tan, reference::want_gradient, 1));
-    EXPECT_EQ(one.inner, Bytes(reference::MeshDerivatives<double>{0, {}, a.pattern().make_matrix<double>()}).inner);
-    reference::MeshDerivatives<double> reused;
+    const Bytes one(a.evaluate(deformed, c, Model::tan, want_all, 1));
+    const Bytes one_gradient(a.evaluate(deformed, c, Model::tan, want_gradient, 1));
+    EXPECT_EQ(one.inner, Bytes(MeshDerivatives<double>{0, {}, a.pattern().make_matrix<double>()}).inner);
+    MeshDerivatives<double> reused;
     for (int threads = 1; threads <= 7; ++threads) {
       const std::string what = (shuffle ? "shuffled, " : "grid, ") + std::to_string(threads) + " threads";
-      expect_same_bytes(one, Bytes(a.evaluate(deformed, c, Model::tan, reference::want_all, threads)), what + ", fresh");
-      a.evaluate(rest, c, Model::tan, reference::want_all, 8 - threads, reused);  // other values, other ranges
-      a.evaluate(deformed, c, Model::tan, reference::want_all, threads, reused);
+      expect_same_bytes(one, Bytes(a.evaluate(deformed, c, Model::tan, want_all, threads)), what + ", fresh");
+      a.evaluate(rest, c, Model::tan, want_all, 8 - threads, reused);  // other values, other ranges
+      a.evaluate(deformed, c, Model::tan, want_all, threads, reused);
       expect_same_bytes(one, Bytes(reused), what + ", reused");
-      expect_same_bytes(one_gradient, Bytes(a.evaluate(deformed, c, Model::tan, reference::want_gradient, threads)),
+      expect_same_bytes(one_gradient, Bytes(a.evaluate(deformed, c, Model::tan, want_gradient, threads)),
                         what + ", gradient");
       const auto rest_many = a.rest_state(rest, {Model::tan, 1.0, 0}, threads);
       EXPECT_EQ(std::memcmp(c.data(), rest_many.data(), sizeof(c[0]) * c.size()), 0) << what;
     }
     if (shuffle) {  // and still the reference's Hessian
       const auto r = reference::assemble<double>(deformed, t, c, Model::tan);
-      const auto f = a.evaluate(deformed, c, Model::tan, reference::want_all, 3);
+      const auto f = a.evaluate(deformed, c, Model::tan, want_all, 3);
       EXPECT_LE(test::sparse_units(f.hessian, r.hessian, u), 8);
       EXPECT_LE(test::vector_units(f.gradient, r.gradient, u), 8);
     }
@@ -268,22 +267,22 @@ TEST(Assemble, AssemblersRunConcurrentlyAndCopiesHaveTheirOwnThreads) {
   const Topology t = build_topology(rest);
   Assembler<double> a(t);
   const auto c = a.rest_state(rest, {Model::tan, 1.0, 0}, 2);
-  const Bytes one(a.evaluate(deformed, c, Model::tan, reference::want_all, 1));
+  const Bytes one(a.evaluate(deformed, c, Model::tan, want_all, 1));
   Assembler<double> b = a;
-  std::vector<reference::MeshDerivatives<double>> outs(2);
+  std::vector<MeshDerivatives<double>> outs(2);
   {
     std::thread other([&] {
-      for (int i = 0; i < 20; ++i) b.evaluate(deformed, c, Model::tan, reference::want_all, 2, outs[1]);
+      for (int i = 0; i < 20; ++i) b.evaluate(deformed, c, Model::tan, want_all, 2, outs[1]);
     });
-    for (int i = 0; i < 20; ++i) a.evaluate(deformed, c, Model::tan, reference::want_all, 2, outs[0]);
+    for (int i = 0; i < 20; ++i) a.evaluate(deformed, c, Model::tan, want_all, 2, outs[0]);
     other.join();
   }
   expect_same_bytes(one, Bytes(outs[0]), "a");
   expect_same_bytes(one, Bytes(outs[1]), "copy");
   Assembler<double> moved = std::move(b);
-  expect_same_bytes(one, Bytes(moved.evaluate(deformed, c, Model::tan, reference::want_all, 3)), "moved");
+  expect_same_bytes(one, Bytes(moved.evaluate(deformed, c, Model::tan, want_all, 3)), "moved");
   b = moved;  // assignment keeps b's (here: no) workers
-  expect_same_bytes(one, Bytes(b.evaluate(deformed, c, Model::tan, reference::want_all, 2)), "assigned");
+  expect_same_bytes(one, Bytes(b.evaluate(deformed, c, Model::tan, want_all, 2)), "assigned");
 }
 
 TEST(Assemble, OtherFacesAreRejectedWhateverTheThreads) {
@@ -295,7 +294,7 @@ TEST(Assemble, OtherFacesAreRejectedWhateverTheThreads) {
   Mesh other = rest;
   std::swap(other.faces.back()[0], other.faces.back()[1]);
   for (int threads : {1, 2, 3}) {
-    const std::string e = error_of<InputError>([&] { a.evaluate(other, c, Model::tan, reference::want_all, threads); });
+    const std::string e = error_of<InputError>([&] { a.evaluate(other, c, Model::tan, want_all, threads); });
     EXPECT_NE(e.find("the deformed mesh must have the same vertices (count) and faces"), std::string::npos) << e;
     const std::string r = error_of<InputError>([&] { a.rest_state(other, {Model::tan, 1.0, 0}, threads); });
     EXPECT_NE(r.find("the rest mesh must have the same"), std::string::npos) << r;
@@ -304,8 +303,8 @@ TEST(Assemble, OtherFacesAreRejectedWhateverTheThreads) {
     EXPECT_NE(p.find("the previous mesh must have the same"), std::string::npos) << p;
   }
   // and the assembler is still sound afterwards
-  const Bytes one(a.evaluate(rest, c, Model::tan, reference::want_all, 1));
-  expect_same_bytes(one, Bytes(a.evaluate(rest, c, Model::tan, reference::want_all, 2)), "after errors");
+  const Bytes one(a.evaluate(rest, c, Model::tan, want_all, 1));
+  expect_same_bytes(one, Bytes(a.evaluate(rest, c, Model::tan, want_all, 2)), "after errors");
 }
 
 TEST(Assemble, EdgeOrientationChangesTheHessianByAFewUlp) {
@@ -314,8 +313,8 @@ TEST(Assemble, EdgeOrientationChangesTheHessianByAFewUlp) {
   const Mesh rest = test::bumpy_grid(9, 52), deformed = test::bumpy_grid(9, 53);
   const Topology t = build_topology(rest);
   const auto c = reference::rest_state<double>(rest, t, {Model::tan, 1.0, 0});
-  const auto first = assemble<double>(deformed, t, c, Model::tan, reference::want_all, 1, EdgeOrientation::first_face);
-  const auto second = assemble<double>(deformed, t, c, Model::tan, reference::want_all, 1, EdgeOrientation::second_face);
+  const auto first = assemble<double>(deformed, t, c, Model::tan, want_all, 1, EdgeOrientation::first_face);
+  const auto second = assemble<double>(deformed, t, c, Model::tan, want_all, 1, EdgeOrientation::second_face);
   EXPECT_LE(test::sparse_units(second.hessian, first.hessian, u), 4);
   EXPECT_LE(test::vector_units(second.gradient, first.gradient, u), 4);
   EXPECT_EQ(first.energy, second.energy);  // the hinge pass does not depend on it
@@ -326,21 +325,21 @@ TEST(Assemble, OnlyRequestedOutputsAreComputedAndStorageIsReused) {
   const Topology t = build_topology(mesh);
   Assembler<double> a(t);
   const auto c = a.rest_state(mesh, {});
-  reference::MeshDerivatives<double> out;
-  a.evaluate(deformed, c, Model::tan, reference::want_energy, 1, out);
+  MeshDerivatives<double> out;
+  a.evaluate(deformed, c, Model::tan, want_energy, 1, out);
   EXPECT_EQ(out.gradient.size(), 0);
   EXPECT_EQ(out.hessian.size(), 0);
   const double energy = out.energy;
-  a.evaluate(deformed, c, Model::tan, reference::want_gradient, 1, out);
+  a.evaluate(deformed, c, Model::tan, want_gradient, 1, out);
   EXPECT_EQ(out.gradient.size(), 3 * 36);
   EXPECT_EQ(out.hessian.size(), 0);
   EXPECT_EQ(out.energy, energy);
   const Eigen::VectorXd gradient = out.gradient;
-  a.evaluate(deformed, c, Model::tan, reference::want_all, 1, out);
+  a.evaluate(deformed, c, Model::tan, want_all, 1, out);
   EXPECT_EQ(out.gradient, gradient);  // the Hessian does not change the gradient's bits
   const double* values = out.hessian.valuePtr();
   const Eigen::SparseMatrix<double> first = out.hessian;
-  a.evaluate(deformed, c, Model::tan, reference::want_hessian, 1, out);
+  a.evaluate(deformed, c, Model::tan, want_hessian, 1, out);
   EXPECT_EQ(out.hessian.valuePtr(), values);  // written in place: no new allocation
   EXPECT_EQ(std::memcmp(first.valuePtr(), values, sizeof(double) * first.nonZeros()), 0);
 }
@@ -352,11 +351,11 @@ TEST(Assemble, StaleValuesAreOverwritten) {
   const Topology t = build_topology(rest);
   Assembler<double> assembler(t);
   const auto c = assembler.rest_state(rest, {Model::tan, 1.0, 0});
-  reference::MeshDerivatives<double> reused;
-  assembler.evaluate(a, c, Model::tan, reference::want_all, 2, reused);
-  assembler.evaluate(b, c, Model::tan, reference::want_all, 2, reused);
+  MeshDerivatives<double> reused;
+  assembler.evaluate(a, c, Model::tan, want_all, 2, reused);
+  assembler.evaluate(b, c, Model::tan, want_all, 2, reused);
   Assembler<double> other(t);
-  const auto fresh = other.evaluate(b, c, Model::tan, reference::want_all, 1);
+  const auto fresh = other.evaluate(b, c, Model::tan, want_all, 1);
   ASSERT_EQ(reused.hessian.nonZeros(), fresh.hessian.nonZeros());
   EXPECT_EQ(std::memcmp(reused.hessian.valuePtr(), fresh.hessian.valuePtr(), sizeof(double) * fresh.hessian.nonZeros()), 0);
 }
@@ -366,11 +365,11 @@ TEST(Assemble, StaleValuesAreOverwritten) {
 // psi' = 2 k a (theta - theta_bar) inherits the absolute error of theta, a few units of u |theta|, whatever
 // the size of theta - theta_bar. Where the sums cancel (closed surfaces), errors are relative to these.
 std::pair<double, double> term_scales(const Mesh& mesh, const Topology& t,
-                                      const std::vector<reference::HingeCoefficients<double>>& c, Model model) {
+                                      const std::vector<HingeCoefficients<double>>& c, Model model) {
   double gradient = 0, hessian = 0;
   for (std::size_t h = 0; h < t.hinges.size(); ++h) {
     const auto d = reference::theta_derivatives<double>(hinge_coordinates(mesh, t.hinges[h]));
-    const auto p = reference::psi(model, c[h], d.angle);
+    const auto p = psi(model, c[h], d.angle);
     const double sensitivity = std::fabs(p.d2 * d.angle.theta);
     gradient += (std::fabs(p.d1) + sensitivity) * d.grad.norm();
     hessian += reference::energy_hessian(p, d.grad, d.hess).norm() + sensitivity * d.hess.norm();
@@ -397,7 +396,7 @@ TEST(Assemble, ClosedAndDegenerateTopologies) {
     const auto c = reference::rest_state<double>(*m, t, {Model::shells, 1.0, 0});
     const auto [gradient_scale, hessian_scale] = term_scales(deformed, t, c, Model::shells);
     for (EdgeOrientation o : {EdgeOrientation::first_face, EdgeOrientation::second_face}) {
-      const auto f = assemble<double>(deformed, t, c, Model::shells, reference::want_all, 1, o);
+      const auto f = assemble<double>(deformed, t, c, Model::shells, want_all, 1, o);
       const auto r = reference::assemble<double>(deformed, t, c, Model::shells);
       const Eigen::SparseMatrix<double> d = f.hessian - r.hessian;
       EXPECT_LE(d.norm(), 8 * u * hessian_scale) << m->faces.size() << " faces";

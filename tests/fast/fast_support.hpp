@@ -8,8 +8,8 @@
 #include <string>
 
 #include "hinge/reference/evaluate.hpp"
-#include "hinge/reference/mesh.hpp"
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/mesh.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::test {
 

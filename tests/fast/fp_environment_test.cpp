@@ -1,5 +1,5 @@
 // hinge::fast's entry points refuse a floating-point environment that breaks exact arithmetic
-// (hinge/reference/fp_environment.hpp): the per-hinge kernel, its span form, and the mesh assembly.
+// (hinge/core/fp_environment.hpp): the per-hinge kernel, its span form, and the mesh assembly.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -7,7 +7,7 @@
 #include "fast_support.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "support/fp_environment.hpp"
 
@@ -33,14 +33,14 @@ TEST(FastFpEnvironment, PerHingeKernelsRefuseABrokenEnvironment) {
 TEST(FastFpEnvironment, MeshAssemblyRefusesABrokenEnvironment) {
   const hinge::Mesh rest = hinge::test::bumpy_grid(5, 1), deformed = hinge::test::bumpy_grid(5, 2);
   const hinge::Topology topology = hinge::build_topology(rest);
-  const auto coefficients = hinge::reference::rest_state<double>(rest, topology, {hinge::reference::Model::tan, 1.0, 0});
+  const auto coefficients = hinge::reference::rest_state<double>(rest, topology, {hinge::Model::tan, 1.0, 0});
   hinge::fast::Assembler<double> assembler(topology);
   for (Setting s : hinge::test::kAllSettings) {
     ScopedFpEnvironment env(s);
-    EXPECT_THROW(assembler.evaluate(deformed, coefficients, hinge::reference::Model::tan, hinge::reference::want_all, 1),
+    EXPECT_THROW(assembler.evaluate(deformed, coefficients, hinge::Model::tan, hinge::want_all, 1),
                  hinge::EnvironmentError);
   }
-  EXPECT_NO_THROW(assembler.evaluate(deformed, coefficients, hinge::reference::Model::tan, hinge::reference::want_all, 1));
+  EXPECT_NO_THROW(assembler.evaluate(deformed, coefficients, hinge::Model::tan, hinge::want_all, 1));
 }
 
 }  // namespace

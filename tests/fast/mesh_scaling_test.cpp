@@ -15,7 +15,6 @@
 namespace hinge::fast {
 namespace {
 
-using reference::Model;
 
 Mesh scaled(const Mesh& m, int k) {
   Mesh s = m;
@@ -37,10 +36,10 @@ void expect_exactly_scaled(int k, Model model) {
   const Topology t = build_topology(rest);
   Assembler<Scalar> a(t);
   const auto c = a.rest_state(rest, {model, 0.7, 0});
-  const auto f = a.evaluate(deformed, c, model, reference::want_all, 2);
+  const auto f = a.evaluate(deformed, c, model, want_all, 2);
   const auto c_scaled = a.rest_state(scaled(rest, k), {model, 0.7, 0});
-  const auto g = a.evaluate(scaled(deformed, k), c_scaled, model, reference::want_all, 2);
-  const std::string what = "2^" + std::to_string(k) + ", " + std::string(reference::model_name(model));
+  const auto g = a.evaluate(scaled(deformed, k), c_scaled, model, want_all, 2);
+  const std::string what = "2^" + std::to_string(k) + ", " + std::string(model_name(model));
   ASSERT_EQ(c.size(), c_scaled.size());
   for (std::size_t h = 0; h < c.size(); ++h) {
     ASSERT_TRUE(same_bits(c[h].a, c_scaled[h].a)) << what << ", hinge " << h;

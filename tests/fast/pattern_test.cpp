@@ -29,7 +29,7 @@ void expect_same_structure(const Mesh& mesh) {
   const Topology t = build_topology(mesh);
   const Pattern p(t);
   const auto coefficients = reference::rest_state<double>(mesh, t, {});
-  const auto r = reference::assemble<double>(mesh, t, coefficients, reference::Model::tan);
+  const auto r = reference::assemble<double>(mesh, t, coefficients, Model::tan);
   const Eigen::SparseMatrix<double> m = p.make_matrix<double>();
   ASSERT_EQ(m.nonZeros(), r.hessian.nonZeros());
   EXPECT_TRUE(std::equal(m.outerIndexPtr(), m.outerIndexPtr() + m.outerSize() + 1, r.hessian.outerIndexPtr()));

@@ -14,20 +14,19 @@
 namespace hinge::fast {
 namespace {
 
-using reference::Model;
 
 enum class Dagger { owner_only, none, both };
 
 // Dense Hessian of the mesh energy from eq. (7) and the per-edge outer products. The face of each edge
 // that takes the dagger and owns the outer product is Edge::face[0].
 Eigen::MatrixXd dense_from_triangles(const Mesh& mesh, const Topology& t,
-                                     const std::vector<reference::HingeCoefficients<double>>& c, Model model, Dagger dagger) {
+                                     const std::vector<HingeCoefficients<double>>& c, Model model, Dagger dagger) {
   const Eigen::Index size = 3 * static_cast<Eigen::Index>(mesh.vertices.size());
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(size, size);
   std::vector<double> psi1(t.hinges.size()), psi2(t.hinges.size());
   for (std::size_t h = 0; h < t.hinges.size(); ++h) {
     const auto d = reference::theta_derivatives<double>(hinge_coordinates(mesh, t.hinges[h]), false);
-    const auto p = reference::psi(model, c[h], d.angle);
+    const auto p = psi(model, c[h], d.angle);
     psi1[h] = p.d1;
     psi2[h] = p.d2;
   }
@@ -98,7 +97,7 @@ Eigen::MatrixXd dense_from_triangles(const Mesh& mesh, const Topology& t,
   return H;
 }
 
-Eigen::MatrixXd dense_reference(const Mesh& mesh, const Topology& t, const std::vector<reference::HingeCoefficients<double>>& c,
+Eigen::MatrixXd dense_reference(const Mesh& mesh, const Topology& t, const std::vector<HingeCoefficients<double>>& c,
                                 Model model) {
   const auto m = reference::assemble<double>(mesh, t, c, model);
   const Eigen::SparseMatrix<double> full = m.hessian.selfadjointView<Eigen::Upper>();
@@ -113,7 +112,7 @@ TEST(TriangleKernel, DaggerInExactlyOneFaceGivesTheHingeSum) {
     const Eigen::MatrixXd want = dense_reference(deformed, t, c, model);
     const Eigen::MatrixXd got = dense_from_triangles(deformed, t, c, model, Dagger::owner_only);
     // Plain double here (no compensated cross products): a few units each way; 16 units of 2^-53.
-    EXPECT_LE((got - want).norm(), 16 * 0x1p-53 * want.norm()) << reference::model_name(model);
+    EXPECT_LE((got - want).norm(), 16 * 0x1p-53 * want.norm()) << model_name(model);
     // The mesh sum is symmetric although no face's diagonal blocks are.
     EXPECT_LE((got - got.transpose()).norm(), 16 * 0x1p-53 * want.norm());
   }

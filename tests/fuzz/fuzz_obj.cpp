@@ -5,7 +5,7 @@
 
 #include "fuzz_target.hpp"
 #include "hinge/io/obj.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using hinge::fuzz::require;

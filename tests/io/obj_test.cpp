@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/io/obj.hpp"
 
 namespace hinge {

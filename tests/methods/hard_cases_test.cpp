@@ -1,4 +1,4 @@
-// The hard families (hinge::oracle::conformance::hard_cases: needles, short hinge edges, near-flat,
+// The hard families (hinge::conformance::hard_cases: needles, short hinge edges, near-flat,
 // near-folded, exactly folded, offsets, scales, combinations) through every method in every scalar type,
 // each output group rounded to double and measured against the certified oracle (normwise, units of
 // 2^-53, conformance::normwise_error). Each method and type is held to the bound docs/hard-cases.md states:
@@ -30,12 +30,12 @@
 
 #include "hinge/fast/faithful.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/oracle/conformance.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/conformance/grading.hpp"
+#include "hinge/core/errors.hpp"
 
 namespace {
 
-namespace conf = hinge::oracle::conformance;
+namespace conf = hinge::conformance;
 using hinge::methods::Method;
 
 int per_family() {
@@ -115,7 +115,7 @@ TEST_P(HardFamilies, every_output_is_within_the_documented_bound_or_a_documented
 
   std::map<std::string, std::array<double, 3>> worst;  // per family
   for (const conf::Expected& e : expected_cases()) {
-    hinge::reference::RoundedTheta got;
+    hinge::RoundedTheta got;
     try {
       got = c.faithful ? hinge::fast::faithful_derivatives_rounded(e.input.x) : hinge::methods::evaluate_hinge(c.method, scalar, e.input.x);
     } catch (const hinge::DomainError& error) {

@@ -33,7 +33,7 @@ DOCS = ROOT / "docs" / "testing.md"
 BEGIN, END = "<!-- mutation-table: begin (tests/mutation/run.py --update-docs) -->", "<!-- mutation-table: end -->"
 
 # Source folders and files copied to the private tree (everything CMake may need to configure).
-COPIED = ["CMakeLists.txt", "CMakePresets.json", "cmake", "reference", "io", "fast", "oracle", "capi", "methods", "proofs", "tools",
+COPIED = ["CMakeLists.txt", "CMakePresets.json", "cmake", "core", "reference", "io", "fast", "oracle", "methods", "proofs", "tools",
           "tests", "bench", "conformance", "docs"]
 
 

@@ -17,7 +17,6 @@ inline void showValue(EdgeOrientation o, std::ostream& os) {
 namespace hinge::test {
 namespace {
 
-using reference::Model;
 
 template <class S>
 fast::HingeDerivatives<S> fast_evaluate(const Coordinates& x) {
@@ -269,10 +268,10 @@ RC_GTEST_PROP(FastBin128, FoldedHingeHasThetaPlusPiExactly, ()) {
 // Mesh assembly (Algorithm 2, with its own rest state, Algorithm 1) against hinge::reference::assemble.
 // ---------------------------------------------------------------------------------------------------
 template <class S>
-reference::MeshDerivatives<S> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology, Model model,
+MeshDerivatives<S> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology, Model model,
                                         double k, fast::EdgeOrientation orientation) {
   fast::Assembler<S> a(topology, orientation);
-  const auto coefficients = a.rest_state(rest, reference::EnergyParameters{model, k, 0});
+  const auto coefficients = a.rest_state(rest, EnergyParameters{model, k, 0});
   return a.evaluate(deformed, coefficients, model);
 }
 
@@ -283,7 +282,7 @@ void mesh_agrees(const MeshCase& mc, Model model, double k, fast::EdgeOrientatio
                  const std::string& property) {
   const MeshEvaluation<S> ref = evaluate_mesh<S>(mc.deformed, mc.rest, model, k);
   const auto f = fast_mesh<S>(mc.deformed, mc.rest, ref.topology, model, k, orientation);
-  RC_TAG(std::string(reference::model_name(model)));
+  RC_TAG(std::string(model_name(model)));
   const Eigen::Matrix<S, Eigen::Dynamic, 1> g = f.gradient;
   expect_same_mesh(property, mc, ref, f.energy, g, dense(f.hessian), fast_mesh_units<S>(ref.kappa) + mesh_units<S>(ref.kappa),
                    "each within its bound: (" + fast_mesh_reason<S>() + ") + (" + mesh_reason<S>() + ")");

@@ -10,7 +10,6 @@
 namespace hinge::test {
 namespace {
 
-using reference::Model;
 
 // ---------------------------------------------------------------------------------------------------
 // Energy derivatives (eqs. (2)-(3)) of one hinge (a two-face mesh) against central differences of an
@@ -83,7 +82,7 @@ void energy_finite_differences(const HingeCase& deformed, const HingeCase& rest,
   RC_PRE(std::abs(d.angle.theta) <= 2.5 && std::abs(r.angle.theta) <= 2.5);
   const Mesh m = two_faces(deformed.x), m_rest = two_faces(rest.x);
   const Topology topology = build_topology(m);
-  const reference::EnergyParameters parameters{model, k, 0};
+  const EnergyParameters parameters{model, k, 0};
   const auto coefficients = reference::rest_state<S>(m_rest, topology, parameters);
   const auto got = reference::assemble<S>(m, topology, coefficients, model);
   const Eigen::Matrix<S, 12, 12> hess = dense(got.hessian);
@@ -107,10 +106,10 @@ void energy_finite_differences(const HingeCase& deformed, const HingeCase& rest,
                                  normwise_units_between(grad, fd.grad.template cast<S>().eval(), u, gradient_scale),
                                  normwise_units_between(hess, fd.hess.template cast<S>().eval(), u, hessian_scale)});
   const double bound = energy_units<S>(kappa);
-  RC_TAG(std::string(reference::model_name(model)));
+  RC_TAG(std::string(model_name(model)));
   check_units(property, units, bound, kappa, [&] {
     Report rep(property, deformed.x);
-    rep.line("rest " + describe(rest.x) + ", model " + std::string(reference::model_name(model)) + ", k = " +
+    rep.line("rest " + describe(rest.x) + ", model " + std::string(model_name(model)) + ", k = " +
              show_exactly(k));
     rep.value("energy", got.energy).value("energy (independent, MPFR 400)", fd.theta);
     rep.values("gradient", grad).values("gradient (central differences)", fd.grad);

@@ -50,13 +50,13 @@ struct MeshEvaluation {
 
 // The scales and theta per hinge, from the reference in double (sizes only).
 template <class S>
-void measure_scales(const Mesh& deformed, const std::vector<reference::HingeCoefficients<double>>& coefficients,
-                    reference::Model model, MeshEvaluation<S>& out) {
+void measure_scales(const Mesh& deformed, const std::vector<HingeCoefficients<double>>& coefficients,
+                    Model model, MeshEvaluation<S>& out) {
   out.theta.clear();
   for (std::size_t i = 0; i < out.topology.hinges.size(); ++i) {
     const Coordinates x = hinge_coordinates(deformed, out.topology.hinges[i]);
     const auto d = reference::theta_derivatives<double>(x);
-    const auto p = reference::psi(model, coefficients[i], d.angle);
+    const auto p = psi(model, coefficients[i], d.angle);
     const double w = std::abs(p.d1) + std::abs(p.d2), g = d.grad.norm();
     out.energy_scale += std::abs(p.value) + std::abs(p.d1);
     out.gradient_scale += w * g;
@@ -68,10 +68,10 @@ void measure_scales(const Mesh& deformed, const std::vector<reference::HingeCoef
 
 // hinge::reference::assemble of `deformed` with the rest state of `rest` (energy `model`, stiffness k).
 template <class S>
-MeshEvaluation<S> evaluate_mesh(const Mesh& deformed, const Mesh& rest, reference::Model model, double k) {
+MeshEvaluation<S> evaluate_mesh(const Mesh& deformed, const Mesh& rest, Model model, double k) {
   MeshEvaluation<S> out;
   out.topology = build_topology(deformed);
-  const reference::EnergyParameters parameters{model, k, 0};
+  const EnergyParameters parameters{model, k, 0};
   const auto coefficients = reference::rest_state<S>(rest, out.topology, parameters);
   const auto d = reference::assemble<S>(deformed, out.topology, coefficients, model);
   out.energy = d.energy;

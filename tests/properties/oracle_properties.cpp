@@ -62,14 +62,14 @@ RC_GTEST_PROP(OracleFastPath, GivesTheSameErrorOnInvalidHinges, ()) { hinge_same
 
 RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnAnyMesh, ()) {
   const MeshCase mc = *gen::mesh();
-  reference::EnergyParameters p;
-  p.model = *rc::gen::element(reference::Model::shells, reference::Model::tan, reference::Model::viscoelastic);
+  EnergyParameters p;
+  p.model = *rc::gen::element(Model::shells, Model::tan, Model::viscoelastic);
   p.k = *gen::uniform(0.5, 2);
   p.k_d_over_dt = 0.25;
   const Topology t = build_topology(mc.deformed);
-  same_either_way([&](const oracle::Options& o) { return oracle::certified_mesh(mc.deformed, mc.rest, t, p, reference::want_all, o); },
+  same_either_way([&](const oracle::Options& o) { return oracle::certified_mesh(mc.deformed, mc.rest, t, p, want_all, o); },
                   "oracle: the mesh fast path gives the enclosures' doubles", [&](Report& rep) {
-                    rep.line(mc.family + " mesh, " + std::string(reference::model_name(p.model)));
+                    rep.line(mc.family + " mesh, " + std::string(model_name(p.model)));
                   });
 }
 

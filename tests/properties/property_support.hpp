@@ -14,7 +14,7 @@
 #include <sstream>
 #include <string>
 
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "support/generators.hpp"
 #include "support/tolerance.hpp"

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "hinge/reference/assemble.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/reference/evaluate.hpp"
 
 namespace hinge::reference {

@@ -4,7 +4,7 @@
 
 #include <numbers>
 
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "support/hinges.hpp"
 

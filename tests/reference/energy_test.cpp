@@ -4,7 +4,7 @@
 
 #include <numbers>
 
-#include "hinge/reference/energy.hpp"
+#include "hinge/core/energy.hpp"
 #include "hinge/reference/hinge_energy.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "support/hinges.hpp"

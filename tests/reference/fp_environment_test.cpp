@@ -1,13 +1,13 @@
-// The floating-point environment check (hinge/reference/fp_environment.hpp) and the reference's entry
+// The floating-point environment check (hinge/core/fp_environment.hpp) and the reference's entry
 // points: every setting that breaks exact arithmetic is named, and nothing is computed under it.
-#include "hinge/reference/fp_environment.hpp"
+#include "hinge/core/fp_environment.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "hinge/reference/assemble.hpp"
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "support/fp_environment.hpp"
 

@@ -25,11 +25,11 @@ Mesh bent(const Mesh& flat, double fold) {
   return m;
 }
 
-Scene everything(reference::Model energy) {
+Scene everything(Model energy) {
   Scene s = test::cloth(4, 3, 0.3, 0.2);
   s.gravity = Gravity{{0.5, -1, -9.81}};
   s.stretching = Stretching{};
-  s.bending = Bending{energy, 1e-3, "fast", "double"};
+  s.bending = Bending{energy, 1e-3};
   s.load = Load{{1, 5}, {0.3, 0.2, -1}};
   s.solve.hessian = HessianTreatment::exact;
   return s;
@@ -81,9 +81,9 @@ void expect_derivatives_match_finite_differences(const Scene& scene, const Mesh&
 }
 
 TEST(Effects, ExactGradientAndHessianMatchFiniteDifferencesAtLargeBends) {
-  for (auto energy : {reference::Model::tan, reference::Model::shells, reference::Model::willmore, reference::Model::bridson})
+  for (auto energy : {Model::tan, Model::shells, Model::willmore, Model::bridson})
     for (double fold : {0.3, 2.0, 3.0}) {  // 3.0 rad: near-folded (tan(theta/2) ~ 14)
-      SCOPED_TRACE(std::string(reference::model_name(energy)) + " fold " + std::to_string(fold));
+      SCOPED_TRACE(std::string(model_name(energy)) + " fold " + std::to_string(fold));
       Scene s = everything(energy);
       expect_derivatives_match_finite_differences(s, bent(s.mesh, fold));
     }
@@ -91,7 +91,7 @@ TEST(Effects, ExactGradientAndHessianMatchFiniteDifferencesAtLargeBends) {
 
 TEST(Effects, ProjectedAndGaussNewtonKeepTheExactGradient) {
   for (auto treatment : {HessianTreatment::projected, HessianTreatment::gauss_newton}) {
-    Scene s = everything(reference::Model::tan);
+    Scene s = everything(Model::tan);
     s.solve.hessian = treatment;
     expect_derivatives_match_finite_differences(s, bent(s.mesh, 2.0), false);
   }
@@ -99,7 +99,7 @@ TEST(Effects, ProjectedAndGaussNewtonKeepTheExactGradient) {
 
 TEST(Effects, DampingDerivativesMatchFiniteDifferences) {
   // The mass part and the paper's viscoelastic bending (section 5), from a step that started elsewhere.
-  Scene s = everything(reference::Model::tan);
+  Scene s = everything(Model::tan);
   s.damping = Damping{3.0, 0.02};
   s.solve.mode = Mode::dynamic, s.solve.dt = 0.01, s.solve.steps = 1;
   for (auto treatment : {HessianTreatment::exact, HessianTreatment::projected}) {
@@ -144,12 +144,12 @@ TEST(Effects, SphereStopsEveryStepShortOfItsSurface) {
 }
 
 TEST(Effects, ARigidMotionCostsNoStretchingOrBendingEnergy) {
-  for (auto energy : {reference::Model::tan, reference::Model::shells}) {
+  for (auto energy : {Model::tan, Model::shells}) {
     Scene s = test::cloth(5, 4, 0.4, 0.3);
     s.rest = bent(s.mesh, 1.0);  // a curved rest shape
     s.mesh = s.rest;
     s.stretching = Stretching{};
-    s.bending = Bending{energy, 1e-3, "fast", "double"};
+    s.bending = Bending{energy, 1e-3};
     test::Effects fx(s);
     const Eigen::AngleAxisd rotation(0.7, Eigen::Vector3d(1, 2, 3).normalized());
     Mesh moved = s.rest;
@@ -170,12 +170,12 @@ TEST(Effects, ARigidMotionCostsNoStretchingOrBendingEnergy) {
 }
 
 TEST(Effects, ACurvedRestShapeWithObtuseAnglesIsAnEquilibrium) {
-  for (auto energy : {reference::Model::tan, reference::Model::shells, reference::Model::bridson}) {
+  for (auto energy : {Model::tan, Model::shells, Model::bridson}) {
     Scene s = test::cloth(5, 4, 0.4, 0.3);
     s.rest = bent(s.mesh, 2.2);  // a fold of 2.2 rad: rest angles above pi/2
     s.mesh = s.rest;
     s.stretching = Stretching{};
-    s.bending = Bending{energy, 1e-3, "fast", "double"};
+    s.bending = Bending{energy, 1e-3};
     test::Effects fx(s);
     const Evaluation at_rest = fx.evaluate(test::coordinates(s.rest), 3);
     Mesh nudged = s.rest;
@@ -183,19 +183,19 @@ TEST(Effects, ACurvedRestShapeWithObtuseAnglesIsAnEquilibrium) {
     const Evaluation off = fx.evaluate(test::coordinates(nudged), 3);
     // The force at rest is rounding: ~u relative to the forces of a 1e-3 displacement over ~1e-3 ... bound
     // 1e3 u / 1e-3 of them.
-    EXPECT_LE(at_rest.gradient.norm(), 1e3 * u / 1e-3 * off.gradient.norm()) << reference::model_name(energy);
+    EXPECT_LE(at_rest.gradient.norm(), 1e3 * u / 1e-3 * off.gradient.norm()) << model_name(energy);
   }
 }
 
 TEST(Effects, ARestHingeFoldedFlatIsAnInputErrorNamingItsEdge) {
   // One rest triangle turned over onto its neighbour (theta_bar = pi): eq. (10) fails there, for every energy.
-  for (auto energy : {reference::Model::shells, reference::Model::tan}) {
+  for (auto energy : {Model::shells, Model::tan}) {
     Scene s = test::cloth(3, 3, 0.2, 0.2);
     s.rest.vertices[3] = {-0.02, -0.06, 0};  // vertex 3 across the diagonal 0-4: face (0, 4, 3) turned over
-    s.bending = Bending{energy, 1e-3, "fast", "double"};
+    s.bending = Bending{energy, 1e-3};
     try {
       test::Effects fx(s);
-      ADD_FAILURE() << "no error for " << reference::model_name(energy);
+      ADD_FAILURE() << "no error for " << model_name(energy);
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("test-scene.json: effects.bending: the rest shape: "), std::string::npos)
           << e.what();
@@ -206,7 +206,7 @@ TEST(Effects, ARestHingeFoldedFlatIsAnInputErrorNamingItsEdge) {
 
 TEST(Effects, ProjectedBendingHessianIsPositiveSemidefinite) {
   Scene s = test::cloth(4, 3, 0.3, 0.2);
-  s.bending = Bending{reference::Model::tan, 1e-3, "fast", "double"};
+  s.bending = Bending{Model::tan, 1e-3};
   s.solve.hessian = HessianTreatment::projected;
   test::Effects fx(s);
   const Evaluation at = fx.evaluate(test::coordinates(bent(s.mesh, 2.5)));
@@ -220,12 +220,12 @@ TEST(Effects, ProjectedBendingHessianIsPositiveSemidefinite) {
 }
 
 TEST(Effects, OtherMethodsGiveTheFastKernelsResultsToRounding) {
-  Scene s = everything(reference::Model::tan);
+  Scene s = everything(Model::tan);
   const Mesh state = bent(s.mesh, 2.0);
   test::Effects fast(s);
   const Evaluation f = fast.evaluate(test::coordinates(state));
   for (const char* method : {"reference", "autodiff"}) {
-    s.bending->method = method;
+    s.bending->method = methods::parse_method(method);
     test::Effects other(s);
     const Evaluation o = other.evaluate(test::coordinates(state));
     // Each method within a few units of 2^-53 of the exact bending derivatives (docs/accuracy); the sums

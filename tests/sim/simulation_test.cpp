@@ -61,7 +61,7 @@ TEST(Simulation, MomentumIsConservedWithoutGravityAndPins) {
   s.mesh.vertices[12][2] += 0.02;  // a bump: internal forces at work
   s.velocity = {1, 0, 0.5};
   s.stretching = Stretching{};
-  s.bending = Bending{reference::Model::tan, 1e-3, "fast", "double"};
+  s.bending = Bending{Model::tan, 1e-3};
   s.solve.hessian = HessianTreatment::exact;
   s.solve.newton_tolerance = 1e-12;
   const Trajectory t = run(s);
@@ -95,7 +95,7 @@ TEST(Simulation, ADampedRunLosesEnergyEveryStepAndMoreThanAnUndampedOne) {
   Scene s = dynamic(test::cloth(6, 6, 0.3, 0.3), 0.01, 40);
   s.gravity = Gravity{{0, 0, -9.81}};
   s.stretching = Stretching{};
-  s.bending = Bending{reference::Model::tan, std::nullopt, "fast", "double"};
+  s.bending = Bending{Model::tan, test::stiffness(s.material)};
   s.pins = Pins{{0, 5}};
   s.solve.newton_tolerance = 1e-10;
   const Trajectory undamped = run(s);
@@ -122,7 +122,7 @@ TEST(Simulation, APinnedClothComesToRestAtItsStaticEquilibriumAndStays) {
   Scene s = dynamic(test::cloth(5, 5, 0.2, 0.2), 0.02, 900);
   s.gravity = Gravity{{0, 0, -9.81}};
   s.stretching = Stretching{};
-  s.bending = Bending{reference::Model::shells, std::nullopt, "fast", "double"};
+  s.bending = Bending{Model::shells, test::stiffness(s.material)};
   s.damping = Damping{5.0, 0};
   s.pins = Pins{{0}};  // one corner: the cloth hangs from it
   s.output_every = 50;
@@ -158,7 +158,7 @@ TEST(Simulation, NoVertexEntersTheSphereAndThreadsChangeNoBit) {
   Scene s = dynamic(test::cloth(11, 11, 1.0, 1.0, 0.3), 0.01, 40);
   s.gravity = Gravity{{0, 0, -9.81}};
   s.stretching = Stretching{};
-  s.bending = Bending{reference::Model::tan, std::nullopt, "fast", "double"};
+  s.bending = Bending{Model::tan, test::stiffness(s.material)};
   s.sphere = Sphere{{0, 0, 0}, 0.25};
   s.solve.hessian = HessianTreatment::exact;
   s.solve.newton_tolerance = 1e-6;
@@ -177,7 +177,7 @@ TEST(Simulation, EveryHessianTreatmentAndSolverReachTheSameEquilibrium) {
   s.material.young = 1e8, s.material.thickness = 1e-3;
   s.gravity = Gravity{{0, 0, -9.81}};
   s.stretching = Stretching{};
-  s.bending = Bending{reference::Model::tan, std::nullopt, "fast", "double"};
+  s.bending = Bending{Model::tan, test::stiffness(s.material)};
   s.pins = Pins{{0, 7, 14, 1, 8, 15}};  // the first two columns: a clamped end
   s.solve.newton_tolerance = 1e-12;
   s.solve.max_newton = 1000;

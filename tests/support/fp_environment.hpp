@@ -1,5 +1,5 @@
 // tests/support/fp_environment.hpp: changing the calling thread's floating-point environment as a host
-// application might (hinge/reference/fp_environment.hpp), and restoring the default at scope exit.
+// application might (hinge/core/fp_environment.hpp), and restoring the default at scope exit.
 #pragma once
 
 #include <cfenv>

@@ -32,8 +32,8 @@
 #include <vector>
 
 #include "hinge/reference/evaluate.hpp"
-#include "hinge/reference/mesh.hpp"
-#include "hinge/reference/predicates.hpp"
+#include "hinge/core/mesh.hpp"
+#include "hinge/core/predicates.hpp"
 #include "support/tolerance.hpp"
 
 namespace hinge::test {

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::test {
 

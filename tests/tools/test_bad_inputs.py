@@ -91,11 +91,12 @@ ENTRIES = [
     E("options", "an unknown energy", ["hessian", "--energy", "springs", "--k", "1", "--mesh", "{d}/m.obj"], 2, "springs",
       {"m.obj": TWO_TRIANGLES}),
     E("options", "a negative stiffness", ["hessian", "--energy", "tan", "--k", "-1", "--mesh", "{d}/m.obj"], 2,
-      "--k must be finite and >= 0", {"m.obj": TWO_TRIANGLES}),
+      "--k: the bending stiffness k must be finite and >= 0, got -1", {"m.obj": TWO_TRIANGLES}),
     E("options", "both --k and a material", ["hessian", "--energy", "tan", "--k", "1", "--young", "1", "--mesh",
       "{d}/m.obj"], 2, "give either --k or --young/--poisson/--thickness, not both", {"m.obj": TWO_TRIANGLES}),
-    E("options", "Poisson's ratio 1, outside (-1, 1)", ["hessian", "--energy", "tan", "--young", "1", "--poisson",
-      "1", "--thickness", "0.1", "--mesh", "{d}/m.obj"], 2, "--poisson must be in (-1, 1)", {"m.obj": TWO_TRIANGLES}),
+    E("options", "Poisson's ratio 0.7, outside (-1, 0.5]", ["hessian", "--energy", "tan", "--young", "1", "--poisson",
+      "0.7", "--thickness", "0.1", "--mesh", "{d}/m.obj"], 2, "--poisson: Poisson's ratio nu must be in (-1, 0.5], got 0.7",
+      {"m.obj": TWO_TRIANGLES}),
     E("options", "an unknown method", ["eval", "--method", "magic"], 2, "magic", stdin=hinge_line(X_OK)),
     E("options", "an unknown scalar type", ["eval", "--scalar", "float80"], 2, "float80", stdin=hinge_line(X_OK)),
     E("options", "MPFR below 2 bits", ["eval", "--scalar", "mpfr:1"], 2, "mpfr:1", stdin=hinge_line(X_OK)),
@@ -161,8 +162,8 @@ ENTRIES = [
 # No NaN anywhere, and no NaN or infinity in a JSON line; the conformance report's "inf" is the documented
 # error of a missing result (docs/conformance.md, "The report").
 NAN = re.compile(r"(?i)(?<![\w.'\"])-?nan(?![\w'\"])")  # a quoted 'nan' is the input, echoed
-# The project's own candidate plugin (capi/), beside the hinge binary's folder in the build tree.
-PLUGIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(HINGE))), "capi", "hinge_candidate_fast.so")
+# The project's own candidate plugin (conformance/plugins/), beside the hinge binary's folder in the build tree.
+PLUGIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(HINGE))), "conformance", "hinge_candidate_fast.so")
 
 
 def fill(text, d):

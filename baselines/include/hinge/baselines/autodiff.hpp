@@ -8,13 +8,13 @@
 #include <array>
 
 #include "hinge/baselines/derivatives.hpp"
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::baselines {
 
 // theta and, as `outputs` asks, grad theta and Hess theta of the hinge x (x0.x, ..., x3.z), in Scalar.
 // Throws hinge::InputError for a non-finite or degenerate hinge (the contract's exact checks,
-// hinge/reference/hinge_checks.hpp); otherwise returns whatever the arithmetic gives, NaN and infinity
+// hinge/core/hinge_checks.hpp); otherwise returns whatever the arithmetic gives, NaN and infinity
 // included (no rescaling: extreme scales overflow or underflow).
 template <HingeScalar Scalar>
 Derivatives<Scalar> autodiff_derivatives(const std::array<double, 12>& x, Outputs outputs = Outputs::hessian);

@@ -7,7 +7,7 @@
 #include <array>
 
 #include "hinge/baselines/derivatives.hpp"
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::baselines {
 

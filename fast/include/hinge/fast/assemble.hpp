@@ -13,7 +13,7 @@
 // Only what is requested is computed: energy alone stops after the hinge pass; the gradient alone skips
 // eq. (7). The viscoelastic model evaluates grad theta and Hess theta once (its two parts live in psi).
 //
-// Output: hinge::reference::MeshDerivatives (the same layout as hinge::reference::assemble: gradient 3n,
+// Output: hinge::MeshDerivatives (the same layout as hinge::reference::assemble: gradient 3n,
 // Hessian upper triangle, row <= col, compressed columns, global index 3 v + c), the Hessian's structure
 // from the Pattern (pattern.hpp): evaluate() writes straight into its values array.
 //
@@ -32,16 +32,12 @@
 #include <vector>
 
 #include "hinge/fast/pattern.hpp"
-#include "hinge/reference/energy.hpp"
-#include "hinge/reference/results.hpp"
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/energy.hpp"
+#include "hinge/core/results.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::fast {
 
-using reference::EnergyParameters;
-using reference::HingeCoefficients;
-using reference::MeshDerivatives;
-using reference::Model;
 
 namespace detail {
 template <class Scalar>
@@ -73,7 +69,7 @@ class Assembler {
   // Viscoelastic model: phi_hat of every hinge from the mesh at the previous time step.
   void set_previous_state(std::vector<HingeCoefficients<Scalar>>& coefficients, const Mesh& previous, int threads = 1);
 
-  // Algorithm 2: what `request` asks (reference::want_energy | want_gradient | want_hessian) into `out`;
+  // Algorithm 2: what `request` asks (want_energy | want_gradient | want_hessian) into `out`;
   // out.hessian keeps its storage when it already has this pattern.
   void evaluate(const Mesh& deformed, const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
                 unsigned request, int threads, MeshDerivatives<Scalar>& out);
@@ -82,7 +78,7 @@ class Assembler {
   void evaluate(const Mesh& deformed, std::vector<HingeCoefficients<Scalar>>&& coefficients, Model model,
                 unsigned request, int threads, MeshDerivatives<Scalar>& out);
   MeshDerivatives<Scalar> evaluate(const Mesh& deformed, const std::vector<HingeCoefficients<Scalar>>& coefficients,
-                                   Model model, unsigned request = reference::want_all, int threads = 1);
+                                   Model model, unsigned request = want_all, int threads = 1);
 
  private:
   std::unique_ptr<detail::Workspace<Scalar>> work_;
@@ -92,7 +88,7 @@ class Assembler {
 template <class Scalar>
 MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
                                  const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
-                                 unsigned request = reference::want_all, int threads = 1,
+                                 unsigned request = want_all, int threads = 1,
                                  EdgeOrientation orientation = EdgeOrientation::first_face) {
   Assembler<Scalar> a(topology, orientation);
   return a.evaluate(deformed, coefficients, model, request, threads);

@@ -23,14 +23,14 @@
 
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/fast/isa.hpp"
-#include "hinge/reference/rounded.hpp"
+#include "hinge/core/rounding.hpp"
 
 namespace hinge::fast {
 
 // theta, grad theta and (if `want_hessian`) Hess theta of the hinge x (x0.x, ..., x3.z), faithfully.
 HingeDerivatives<double> faithful_hinge_derivatives(const std::array<double, 12>& x, bool want_hessian = true);
 // The same in hinge::reference's result type (`hinge eval --faithful`, the Python module).
-reference::RoundedTheta faithful_derivatives_rounded(const std::array<double, 12>& x);
+RoundedTheta faithful_derivatives_rounded(const std::array<double, 12>& x);
 // The same compiled for `isa` (tests compare them): true, or false with nothing written where the
 // processor lacks it.
 bool faithful_hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);

@@ -49,7 +49,7 @@
 #include <array>
 #include <span>
 
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::fast {
 

@@ -24,7 +24,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "hinge/reference/mesh.hpp"
+#include "hinge/core/mesh.hpp"
 
 namespace hinge::fast {
 

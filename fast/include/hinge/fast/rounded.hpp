@@ -6,12 +6,12 @@
 
 #include <array>
 
-#include "hinge/reference/rounded.hpp"
+#include "hinge/core/rounding.hpp"
 
 namespace hinge::fast {
 
 // The per-hinge kernel (hinge_kernel.hpp) in `type`. Throws InputError (degenerate or non-finite input)
 // or DomainError (a result outside the range of double), as hinge::reference::theta_derivatives_rounded.
-reference::RoundedTheta hinge_derivatives_rounded(const ScalarType& type, const std::array<double, 12>& x);
+RoundedTheta hinge_derivatives_rounded(const ScalarType& type, const std::array<double, 12>& x);
 
 }  // namespace hinge::fast

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "hinge/reference/results.hpp"
+#include "hinge/core/results.hpp"
 
 namespace hinge::io {
 
@@ -25,7 +25,7 @@ struct HingeLine {
 HingeLine parse_hinge_line(const std::string& text, long line_number);
 
 // One output line (without the newline).
-std::string result_line(const std::string& id_json, const reference::RoundedTheta& r);
+std::string result_line(const std::string& id_json, const RoundedTheta& r);
 std::string error_line(const std::string& id_json, const std::string& error);
 std::string invalid_line(const HingeLine& line);
 
@@ -53,7 +53,7 @@ bool blank(const std::string& text);
 #include <istream>
 #include <ostream>
 
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 
 template <class F>
 void hinge::io::for_each_hinge_line(std::istream& in, F&& f, long first_line) {

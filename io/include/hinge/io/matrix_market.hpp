@@ -1,6 +1,6 @@
 // hinge/io/matrix_market.hpp: the mesh Hessian as a Matrix Market file (docs/contract.md, `hinge hessian
 // --out`): `coordinate real symmetric` (or, read only, `general`), 1-based, 3n x 3n, global index 3 v + c.
-// In memory the matrix is its upper triangle (row <= col, hinge/reference/results.hpp); the file holds
+// In memory the matrix is its upper triangle (row <= col, hinge/core/results.hpp); the file holds
 // the same entries as the lower triangle (row >= col), as symmetric Matrix Market files conventionally do.
 #pragma once
 

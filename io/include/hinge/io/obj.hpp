@@ -8,7 +8,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "hinge/reference/mesh.hpp"
+#include "hinge/core/mesh.hpp"
 
 namespace hinge::io {
 

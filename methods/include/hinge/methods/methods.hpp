@@ -1,6 +1,6 @@
 // hinge/methods/methods.hpp: the evaluation methods by name (docs/contract.md: `hinge eval --method`,
 // `hinge hessian --method`, the study's rows, the Python module), each in a scalar type chosen at run
-// time (hinge/reference/scalar.hpp), every output rounded to double. A name is parsed once into a Method;
+// time (hinge/core/scalar.hpp), every output rounded to double. A name is parsed once into a Method;
 // the calls below switch on it and go straight to the library that implements it.
 #pragma once
 
@@ -10,10 +10,10 @@
 #include <string_view>
 #include <vector>
 
-#include "hinge/reference/energy.hpp"
-#include "hinge/reference/mesh.hpp"
-#include "hinge/reference/results.hpp"
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/energy.hpp"
+#include "hinge/core/mesh.hpp"
+#include "hinge/core/results.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::methods {
 
@@ -34,15 +34,15 @@ Method parse_method(std::string_view name);
 // theta, grad theta, Hess theta of the hinge x (x0.x, ..., x3.z) by `method` in `scalar`, rounded to double.
 // Throws hinge::InputError (degenerate or non-finite input) or hinge::DomainError (a result outside the range
 // of double; for autodiff and symbolic also a NaN or infinity from an intermediate, which they do not rescale).
-reference::RoundedTheta evaluate_hinge(Method method, const ScalarType& scalar, const std::array<double, 12>& x);
+RoundedTheta evaluate_hinge(Method method, const ScalarType& scalar, const std::array<double, 12>& x);
 
-// A whole mesh: what `request` asks (reference::want_energy | want_gradient | want_hessian).
+// A whole mesh: what `request` asks (want_energy | want_gradient | want_hessian).
 struct MeshInput {
   const Mesh* deformed = nullptr;
   const Mesh* rest = nullptr;  // same faces and vertex count (Algorithm 1's rest state)
   const Topology* topology = nullptr;
-  reference::EnergyParameters parameters;
-  unsigned request = reference::want_all;
+  EnergyParameters parameters;
+  unsigned request = want_all;
   int threads = 1;  // hinge::fast only; never changes an output bit
 };
 
@@ -65,9 +65,9 @@ class MeshEvaluator {
   // One evaluation. `last`: none follows, so the per-hinge constants and (fast) the pattern may be freed as
   // soon as they have served, which lowers the peak memory; evaluate() may not be called again.
   void evaluate(bool last = false);
-  // The last evaluation rounded to double, moved out (once per evaluation; see reference::round_mesh on
+  // The last evaluation rounded to double, moved out (once per evaluation; see round_mesh on
   // assigning it). Throws DomainError for a result outside the range of double.
-  reference::RoundedMesh take_result();
+  RoundedMesh take_result();
 
  private:
   ScalarType scalar_;  // mpfr's precision is set again before each call (it is a global setting)
@@ -75,6 +75,6 @@ class MeshEvaluator {
 };
 
 // One evaluation: MeshEvaluator(method, scalar, input), evaluate(true), take_result().
-reference::RoundedMesh evaluate_mesh(Method method, const ScalarType& scalar, const MeshInput& input);
+RoundedMesh evaluate_mesh(Method method, const ScalarType& scalar, const MeshInput& input);
 
 }  // namespace hinge::methods

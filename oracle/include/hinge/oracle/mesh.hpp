@@ -11,20 +11,20 @@
 // certified once its enclosure lies within [-2^-1075, 2^-1075] (then it rounds to zero), else flagged.
 //
 // Energies: shells, tan, willmore, bridson and viscoelastic (with phi_hat = phi_bar), as in
-// hinge/reference/energy.hpp. The stiffness k is taken as the exact value of the double given.
+// hinge/core/energy.hpp. The stiffness k is taken as the exact value of the double given.
 #pragma once
 
 #include <vector>
 
 #include "hinge/oracle/oracle.hpp"
-#include "hinge/reference/energy.hpp"
-#include "hinge/reference/mesh.hpp"
-#include "hinge/reference/results.hpp"
+#include "hinge/core/energy.hpp"
+#include "hinge/core/mesh.hpp"
+#include "hinge/core/results.hpp"
 
 namespace hinge::oracle {
 
 struct CertifiedMesh {
-  reference::RoundedMesh rounded;  // energy, gradient (3n, if requested), Hessian upper triangle (if requested)
+  RoundedMesh rounded;  // energy, gradient (3n, if requested), Hessian upper triangle (if requested)
   unsigned bits = 0;               // the working precision the enclosures needed (0: the fast path decided all)
   std::vector<Uncertified> uncertified;  // outputs named "energy", "gradient[i]", "hessian(i,j)" (0-based)
   // sum over hinges of ||g_h||_2 and ||H_h||_F, the hinges' own energy gradients and Hessians (for the
@@ -35,7 +35,7 @@ struct CertifiedMesh {
 
 // Throws hinge::InputError / hinge::DomainError naming the hinge, as hinge::reference::assemble does.
 CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
-                             const reference::EnergyParameters& parameters, unsigned request = reference::want_all,
+                             const EnergyParameters& parameters, unsigned request = want_all,
                              const Options& options = {});
 
 }  // namespace hinge::oracle

@@ -10,10 +10,10 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "hinge/reference/energy.hpp"
+#include "hinge/core/energy.hpp"
 #include "hinge/reference/hinge_energy.hpp"
-#include "hinge/reference/mesh.hpp"
-#include "hinge/reference/results.hpp"
+#include "hinge/core/mesh.hpp"
+#include "hinge/core/results.hpp"
 
 namespace hinge::reference {
 

@@ -6,7 +6,7 @@
 
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate_impl.hpp"
-#include "hinge/reference/hinge_checks.hpp"
+#include "hinge/core/hinge_checks.hpp"
 
 namespace hinge::reference {
 
@@ -111,10 +111,10 @@ MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
   template ::hinge::reference::PreparedHinge<S> hinge::reference::prepare_hinge<S>(const std::array<double, 12>&); \
   template ::hinge::reference::ThetaDerivatives<S> hinge::reference::theta_derivatives<S>(                    \
       const std::array<double, 12>&, bool);                                                                  \
-  template std::vector<::hinge::reference::HingeCoefficients<S>> hinge::reference::rest_state<S>(            \
-      const ::hinge::Mesh&, const ::hinge::Topology&, const ::hinge::reference::EnergyParameters&);          \
-  template void hinge::reference::set_previous_state<S>(std::vector<::hinge::reference::HingeCoefficients<S>>&, \
+  template std::vector<::hinge::HingeCoefficients<S>> hinge::reference::rest_state<S>(            \
+      const ::hinge::Mesh&, const ::hinge::Topology&, const ::hinge::EnergyParameters&);          \
+  template void hinge::reference::set_previous_state<S>(std::vector<::hinge::HingeCoefficients<S>>&, \
                                                         const ::hinge::Mesh&, const ::hinge::Topology&);     \
-  template ::hinge::reference::MeshDerivatives<S> hinge::reference::assemble<S>(                             \
-      const ::hinge::Mesh&, const ::hinge::Topology&, const std::vector<::hinge::reference::HingeCoefficients<S>>&, \
-      ::hinge::reference::Model, unsigned);
+  template ::hinge::MeshDerivatives<S> hinge::reference::assemble<S>(                             \
+      const ::hinge::Mesh&, const ::hinge::Topology&, const std::vector<::hinge::HingeCoefficients<S>>&, \
+      ::hinge::Model, unsigned);

@@ -12,8 +12,8 @@
 
 #include <limits>
 
-#include "hinge/reference/energy.hpp"  // BendAngle
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/energy.hpp"  // BendAngle
+#include "hinge/core/errors.hpp"
 #include "hinge/reference/stencil.hpp"
 
 namespace hinge::reference {

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "hinge/reference/bend_angle.hpp"
 #include "hinge/reference/hessian.hpp"
@@ -73,5 +74,11 @@ namespace hinge::reference {
 // docs/contract.md, "well-shaped": in each triangle the smallest altitude is at least 0.15 times the
 // longest edge, and 0.05 <= |theta| <= pi - 0.05 (evaluated in double; borderline cases may go either way).
 bool well_shaped(const std::array<double, 12>& x);
+
+// `count` well-shaped hinges: 12 random coordinates in a box of side 10^U(-3, 3), all offset by
+// U(-offset, offset), kept when well_shaped accepts them (std::mt19937_64 seeded with `seed`: the same
+// hinges on every platform with the same standard library). What `hinge demo`, the study, the benchmark
+// and the tests sample.
+std::vector<std::array<double, 12>> well_shaped_hinges(int count, unsigned seed, double offset = 100);
 
 }  // namespace hinge::reference

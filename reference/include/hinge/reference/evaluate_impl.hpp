@@ -7,11 +7,11 @@
 #include <limits>
 #include <string>
 
-#include "hinge/reference/errors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/reference/evaluate.hpp"
-#include "hinge/reference/fp_environment.hpp"
-#include "hinge/reference/hinge_checks.hpp"
-#include "hinge/reference/predicates.hpp"
+#include "hinge/core/fp_environment.hpp"
+#include "hinge/core/hinge_checks.hpp"
+#include "hinge/core/predicates.hpp"
 
 namespace hinge::reference {
 

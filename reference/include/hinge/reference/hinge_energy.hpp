@@ -6,7 +6,7 @@
 #include <string>
 
 #include "hinge/reference/bend_angle.hpp"
-#include "hinge/reference/energy.hpp"
+#include "hinge/core/energy.hpp"
 #include "hinge/reference/hessian.hpp"
 
 namespace hinge::reference {

@@ -20,7 +20,7 @@
 #include <Eigen/Geometry>  // cross products
 #include <array>
 
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::reference {
 

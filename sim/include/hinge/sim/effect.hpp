@@ -10,13 +10,13 @@
 #include <string_view>
 #include <vector>
 
-#include "hinge/reference/mesh.hpp"
+#include "hinge/core/mesh.hpp"
 #include "hinge/sim/scene.hpp"
 #include "hinge/sim/system.hpp"
 
 namespace hinge::sim {
 
-// What one evaluation of the potential adds to (request: reference::want_energy | want_gradient |
+// What one evaluation of the potential adds to (request: want_energy | want_gradient |
 // want_hessian).
 struct Evaluation {
   unsigned request = 7;

@@ -9,8 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "hinge/reference/energy.hpp"
-#include "hinge/reference/mesh.hpp"
+#include "hinge/core/energy.hpp"
+#include "hinge/core/mesh.hpp"
+#include "hinge/core/scalar.hpp"
+#include "hinge/methods/methods.hpp"
 
 namespace hinge::sim {
 
@@ -19,7 +21,7 @@ using Vec3 = std::array<double, 3>;
 struct Material {
   double density = 0;    // kg/m^3
   double young = 0;      // Pa (needed by stretching, and by bending without "k")
-  double poisson = 0;    // in [0, 1/2)
+  double poisson = 0;    // in (-1, 1/2]
   double thickness = 0;  // m
 };
 
@@ -45,10 +47,10 @@ struct Gravity {
 };
 struct Stretching {};  // "model": "stvk", the only model
 struct Bending {
-  reference::Model energy = reference::Model::shells;
-  std::optional<double> k;      // default: eq. (11) from the material
-  std::string method = "fast";  // hinge eval's names
-  std::string scalar = "double";
+  Model energy = Model::shells;
+  double k = 0;                 // given, or eq. (11) from the material (hinge/core/bending_problem.hpp)
+  methods::Method method = methods::Method::fast;  // hinge eval's methods and scalar types
+  ScalarType scalar{};                            // double
 };
 struct Damping {
   double mass = 0;     // 1/s: the drag force -mass M v

@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "hinge/reference/mesh.hpp"
+#include "hinge/core/mesh.hpp"
 
 namespace hinge::sim {
 

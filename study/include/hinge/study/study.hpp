@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "hinge/methods/methods.hpp"
-#include "hinge/reference/scalar.hpp"
+#include "hinge/core/scalar.hpp"
 
 namespace hinge::study {
 
@@ -56,7 +56,7 @@ struct Options {
 // mpfr:256 (and mpfr:512 in the full study).
 std::vector<ScalarType> default_scalars(bool quick);
 
-// The built-in hinges: the conformance inputs (hinge::oracle::conformance::inputs(): well-shaped,
+// The built-in hinges: the conformance inputs (hinge::conformance::inputs(): well-shaped,
 // rotations, scales, offsets, near-flat, near-folded, needles, short-hinge-edges, boundary-meshes), and in
 // the full study 2000 more seeded well-shaped hinges (category well-shaped).
 std::vector<StudyHinge> builtin_hinges(bool quick);

@@ -1,5 +1,0 @@
-// The autodiff baseline instantiated for mpfr (run-time precision): one unit per scalar family and method, so that
-// no unit compiles more than one family of these heavy templates.
-#include "autodiff_impl.hpp"
-
-HINGE_AUTODIFF_INSTANTIATE(hinge::mpfr)

@@ -1,6 +1,0 @@
-// The autodiff baseline instantiated for float128 and bin128: one unit per scalar family and method, so that
-// no unit compiles more than one family of these heavy templates.
-#include "autodiff_impl.hpp"
-
-HINGE_AUTODIFF_INSTANTIATE(hinge::float128)
-HINGE_AUTODIFF_INSTANTIATE(hinge::bin128)

@@ -1,0 +1,55 @@
+// hinge/conformance/plugin.hpp: a candidate implementation loaded from a shared library (hinge/candidate.h), as
+// `hinge conform --plugin LIB.so [--symbol NAME]` calls it: once per conformance case, from one thread.
+//
+// The library is loaded and called in a child process (docs/contract.md, "Plugins", version 2), so that
+// hinge conform survives it: a case on which the plugin crashes, or runs longer than the time-out, fails
+// with the signal or the time-out named, the child is started again, and the other cases still run. The
+// child talks to the parent over a socket pair: 12 doubles in, a status and 157 doubles out. Whatever the
+// plugin prints goes to standard error.
+#pragma once
+
+#include <sys/types.h>
+
+#include <array>
+#include <stdexcept>
+#include <string>
+
+#include "hinge/candidate.h"
+#include "hinge/conformance/grading.hpp"
+
+namespace hinge::conformance {
+
+// The plugin could not be loaded (no such file, no such symbol, a crash or a time-out while loading): a
+// usage error of hinge conform (exit status 2).
+class PluginError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Plugin {
+ public:
+  // Starts the child, which loads `path` (dlopen) and finds `symbol` (dlsym); throws PluginError naming
+  // both and the reason. `timeout_seconds` bounds each case, and the loading.
+  Plugin(const std::string& path, const std::string& symbol, double timeout_seconds = 10);
+  ~Plugin();
+  Plugin(const Plugin&) = delete;
+  Plugin& operator=(const Plugin&) = delete;
+
+  // The plugin's outputs for x: ok (or nonfinite, when it wrote a NaN or an infinity, or left an output
+  // unwritten), or error: "returned N" when it returned nonzero, "crashed (signal N, NAME)" or "timed out
+  // after S s" when the child did not survive the case (it is started again for the next one).
+  CandidateResult operator()(const std::array<double, 12>& x);
+
+  // Whether an error of operator() is one the plugin did not survive (a crash or a time-out).
+  static bool fatal(const CandidateResult& r);
+
+ private:
+  void start();  // forks the child and waits for it to report the library loaded; throws PluginError
+  void stop();   // kills and reaps the child, if any
+  std::string path_, symbol_;
+  double timeout_;
+  pid_t child_ = -1;
+  int socket_ = -1;
+};
+
+}  // namespace hinge::conformance

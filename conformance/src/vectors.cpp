@@ -1,0 +1,97 @@
+// The committed conformance vectors, written (hinge/conformance/vectors.hpp, docs/conformance-format.md).
+#include <stdexcept>
+
+#include "hinge/io/atomic_file.hpp"
+#include "hinge/io/jsonl.hpp"
+#include "hinge/io/matrix_market.hpp"
+#include "hinge/io/number.hpp"
+#include "hinge/io/obj.hpp"
+#include "hinge/conformance/grading.hpp"
+#include "hinge/conformance/vectors.hpp"
+
+namespace hinge::conformance {
+namespace {
+
+using namespace oracle;  // the certifier: exact_hinge, certify, certified_mesh, ...
+
+void write_mesh(const std::filesystem::path& path, const Mesh& m, const std::string& comment) {
+  io::AtomicFile f(path.string());
+  io::write_obj(f.stream(), m, comment);
+  f.commit();
+}
+
+std::string hinge_line(const Expected& e) {
+  const Case& c = e.input;
+  std::string line = "{\"id\": " + io::json_string(c.id) + ", \"category\": " + io::json_string(c.category) + ", \"x\": ";
+  io::append_array(line, c.x.data(), 12);
+  line += ", \"theta\": ";
+  io::append_double(line, e.values.theta);
+  line += ", \"grad\": ";
+  io::append_array(line, e.values.grad.data(), 12);
+  line += ", \"hess\": ";
+  io::append_array(line, e.values.hess.data(), 144);
+  line += ", \"length\": ";
+  io::append_double(line, e.conditioning.length);
+  line += ", \"scale\": ";
+  io::append_array(line, e.conditioning.scale.data(), 3);
+  line += ", \"kappa\": ";
+  io::append_array(line, e.conditioning.kappa.data(), 3);
+  line += ", \"bits\": " + std::to_string(e.values.bits) + "}\n";
+  return line;
+}
+
+}  // namespace
+
+void write_vectors(const std::filesystem::path& dir, const std::function<void(std::size_t, std::size_t)>& progress) {
+  namespace fs = std::filesystem;
+  fs::create_directories(dir / "hinges");
+  fs::create_directories(dir / "meshes");
+  const std::vector<Case> cases = inputs();
+  std::size_t done = 0;
+  for (const std::string& category : categories()) {
+    io::AtomicFile f((dir / "hinges" / (category + ".jsonl")).string());
+    for (const Case& c : cases) {
+      if (c.category != category) continue;
+      const Expected e = expected(c);
+      if (!e.values.uncertified.empty()) throw std::logic_error("conformance case " + c.id + " is not certified");
+      f.stream() << hinge_line(e);
+      if (progress) progress(++done, cases.size());
+    }
+    f.commit();
+  }
+  io::AtomicFile index((dir / "meshes" / "meshes.jsonl").string());
+  for (const MeshCase& m : meshes()) {
+    write_mesh(dir / "meshes" / (m.name + ".obj"), m.deformed, "hinge conformance mesh " + m.name + " (deformed)");
+    write_mesh(dir / "meshes" / (m.name + "-rest.obj"), m.rest, "hinge conformance mesh " + m.name + " (rest)");
+    const Topology t = build_topology(m.deformed);
+    for (const char* energy : {"shells", "tan"}) {
+      EnergyParameters p;
+      p.model = parse_model(energy);
+      p.k = 1;
+      Options enclosures;  // the vectors record the enclosures' working precision ("bits")
+      enclosures.fast_path = false;
+      const CertifiedMesh c = certified_mesh(m.deformed, m.rest, t, p, want_all, enclosures);
+      if (!c.uncertified.empty()) throw std::logic_error("conformance mesh " + m.name + " is not certified");
+      const std::string stem = m.name + "." + energy;
+      io::AtomicFile h((dir / "meshes" / (stem + ".mtx")).string());
+      io::write_matrix_market(h.stream(), c.rounded.hessian,
+                              "hinge: certified Hessian of the bending energy; lower triangle, 1-based, global index 3 v + c");
+      h.commit();
+      io::AtomicFile g((dir / "meshes" / (stem + ".gradient.txt")).string());
+      io::write_numbers(g.stream(), c.rounded.gradient);
+      g.commit();
+      std::string line = "{\"mesh\": " + io::json_string(m.name + ".obj") + ", \"rest\": " + io::json_string(m.name + "-rest.obj") +
+                         ", \"energy\": " + io::json_string(energy) + ", \"k\": 1.0, \"hinges\": " +
+                         std::to_string(t.hinges.size()) + ", \"value\": ";
+      io::append_double(line, c.rounded.energy);
+      line += ", \"hessian\": " + io::json_string(stem + ".mtx") + ", \"gradient\": " + io::json_string(stem + ".gradient.txt") +
+              ", \"kappa_sum\": ";
+      io::append_double(line, hessian_kappa_sum(c));
+      line += ", \"bits\": " + std::to_string(c.bits) + "}\n";
+      index.stream() << line;
+    }
+  }
+  index.commit();
+}
+
+}  // namespace hinge::conformance

@@ -1,0 +1,36 @@
+// hinge/oracle/conditioning.hpp: the condition numbers of docs/contract.md ("Condition numbers"): those
+// of the conformance tolerance policy and of `hinge eval --cond`, computed from certified and exact values,
+// so that they come out the same bits on every platform (they are part of the committed vectors).
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "hinge/oracle/oracle.hpp"
+
+namespace hinge::oracle {
+
+// Conditioning of one case (docs/conformance.md, "Tolerance policy"). With L the longest of the five
+// edge vectors and J_f the Jacobian of output group f with respect to the 12 coordinates
+// (J_theta = grad theta, J_grad = Hess theta, J_hess the third derivatives, by central differences on
+// the exact form with step 2^-100 L):
+//   scale_f = L ||J_f||_F        kappa_f = scale_f / ||f||_2   (kappa_f = 1 where f is exactly zero)
+struct Conditioning {
+  double length = 0;
+  std::array<double, 3> scale{};
+  std::array<double, 3> kappa{};
+};
+
+// Certified outputs of `x` (stages 1 and 2: the same doubles as the fast path gives) and their conditioning.
+// Throws as certified_theta_derivatives does.
+struct ConditionedTheta {
+  CertifiedTheta values;
+  Conditioning conditioning;
+};
+ConditionedTheta certified_with_conditioning(const std::array<double, 12>& x);
+
+// ||v||_2 without overflow or underflow: scaled by the largest magnitude, in a fixed order of operations;
+// NaN when an entry is.
+double scaled_norm(const double* v, std::size_t n);
+
+}  // namespace hinge::oracle

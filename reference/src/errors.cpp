@@ -1,9 +1,0 @@
-// The library's exceptions (hinge/reference/errors.hpp).
-#include "hinge/reference/errors.hpp"
-
-namespace hinge {
-
-void throw_outside_double(const std::string& what) { throw DomainError(what + " is outside the range of double"); }
-void throw_outside_float(const std::string& what) { throw DomainError(what + " overflowed in float (the value, or a step towards it, is outside float's range)"); }
-
-}  // namespace hinge
