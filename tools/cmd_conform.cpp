@@ -165,12 +165,7 @@ int write_inputs(const ConformOptions& o) {
   std::optional<io::AtomicFile> file;
   std::ostream* out = &std::cout;
   if (!o.output.empty() && o.output != "-") out = &file.emplace(o.output).stream();
-  for (const conf::Case& c : selected_inputs(o)) {
-    std::string line = "{\"id\": " + io::json_string(c.id) + ", \"category\": " + io::json_string(c.category) + ", \"x\": ";
-    io::append_array(line, c.x.data(), 12);
-    line += "}\n";
-    *out << line;
-  }
+  for (const conf::Case& c : selected_inputs(o)) *out << io::input_line(c.id, c.category, c.x) << '\n';
   out->flush();
   if (file) file->commit();
   return *out ? exit_done : exit_invalid_input;

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "hinge/study/study.hpp"
 
 namespace hinge::tools {
 

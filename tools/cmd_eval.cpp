@@ -2,7 +2,6 @@
 #include "commands.hpp"
 #include "hinge/fast/faithful.hpp"
 #include "hinge/io/jsonl.hpp"
-#include "hinge/io/number.hpp"
 #include "hinge/methods/methods.hpp"
 #include "hinge/oracle/conditioning.hpp"
 #include "hinge_stream.hpp"
@@ -39,15 +38,9 @@ Action add_eval(CLI::App& app) {
     if (o->faithful && (method != methods::Method::fast || scalar.kind != ScalarType::Kind::kind_double))
       throw std::invalid_argument("--faithful needs --method fast and --scalar double");
     return run_hinge_stream(o->input, o->output, "eval", [&](const std::string& id_json, const std::array<double, 12>& x) {
-      std::string line = io::result_line(id_json, o->faithful ? fast::faithful_derivatives_rounded(x)
-                                                              : methods::evaluate_hinge(method, scalar, x));
-      if (o->cond) {
-        const auto kappa = oracle::certified_with_conditioning(x).conditioning.kappa;
-        line.pop_back();  // '}'
-        line += ", \"kappa\": {\"theta\": " + io::format_double(kappa[0]) + ", \"grad\": " +
-                io::format_double(kappa[1]) + ", \"hess\": " + io::format_double(kappa[2]) + "}}";
-      }
-      return line;
+      const RoundedTheta r = o->faithful ? fast::faithful_derivatives_rounded(x) : methods::evaluate_hinge(method, scalar, x);
+      if (!o->cond) return io::result_line(id_json, r);
+      return io::result_line(id_json, r, oracle::certified_with_conditioning(x).conditioning.kappa);
     });
   };
 }

@@ -5,11 +5,12 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "hinge/core/build_info.hpp"
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/obj.hpp"
 #include "hinge/sim/scene.hpp"
 #include "hinge/sim/simulation.hpp"
-#include "hinge/sim/summary.hpp"
+#include "hinge/io/summary.hpp"
 #include "mesh_job.hpp"
 #include "progress.hpp"
 
@@ -80,7 +81,7 @@ Action add_simulate(CLI::App& app) {
       Mesh last;
       const sim::Summary summary = sim::simulate(scene, run, last);
       if (summary.ok) write_mesh(final_obj, last, "hinge simulate: " + scene.name + ", final state");
-      write_atomically(summary_file, sim::summary_json(summary, study::build_description()));
+      write_atomically(summary_file, io::summary_json(summary, build_description()));
       if (!summary.ok) {
         std::cerr << "hinge simulate: " << scene.name << ": failed: " << summary.reason << "\n";
         return exit_invalid_input;

@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "hinge/io/atomic_file.hpp"
+#include "hinge/io/study_json.hpp"
 #include "hinge/core/errors.hpp"
 #include "hinge/study/study.hpp"
 #include "progress.hpp"
@@ -79,7 +80,7 @@ int run_study(const study::Options& given, const std::string& out, bool plots) {
     std::filesystem::create_directories(dir);
     {
       io::AtomicFile json((dir / "study.json").string()), markdown((dir / "study.md").string());
-      study::write_json(json.stream(), result);
+      io::write_study_json(json.stream(), result);
       study::write_markdown(markdown.stream(), result);
       json.commit();
       markdown.commit();

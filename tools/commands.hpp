@@ -7,7 +7,9 @@
 #include <functional>
 #include <string>
 
-#include "hinge/study/study.hpp"
+namespace hinge::study {
+struct Options;  // hinge/study/study.hpp: only `hinge study` and `hinge demo` include it
+}  // namespace hinge::study
 
 namespace hinge::tools {
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 
 namespace hinge {
@@ -17,6 +18,25 @@ std::vector<std::array<Index, 3>> grid_faces(int nx, int ny) {
       faces.push_back({p, r, s});
     }
   return faces;
+}
+
+Mesh grid_mesh(int nx, int ny, double lx, double ly, const std::array<double, 3>& center, const std::string& plane) {
+  if (nx < 2 || ny < 2 || !(lx > 0) || !(ly > 0)) throw std::invalid_argument("grid: expected nx, ny >= 2 and positive sizes");
+  int a = 0, b = 1;
+  if (plane == "xz") b = 2;
+  else if (plane == "yz") a = 1, b = 2;
+  else if (plane != "xy") throw std::invalid_argument("grid: unknown plane '" + plane + "'");
+  Mesh m;
+  m.vertices.resize(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      std::array<double, 3> p = center;
+      p[static_cast<std::size_t>(a)] += (static_cast<double>(i) / (nx - 1) - 0.5) * lx;
+      p[static_cast<std::size_t>(b)] += (static_cast<double>(j) / (ny - 1) - 0.5) * ly;
+      m.vertices[static_cast<std::size_t>(i + nx * j)] = p;
+    }
+  m.faces = grid_faces(nx, ny);
+  return m;
 }
 
 Mesh cloth(int n, unsigned seed) {

@@ -116,6 +116,21 @@ std::string json_string(const std::string& s) {
   return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
+std::string result_line(const std::string& id_json, const RoundedTheta& r, const std::array<double, 3>& kappa) {
+  std::string out = result_line(id_json, r);
+  out.pop_back();  // '}'
+  out += ", \"kappa\": {\"theta\": " + format_double(kappa[0]) + ", \"grad\": " + format_double(kappa[1]) +
+         ", \"hess\": " + format_double(kappa[2]) + "}}";
+  return out;
+}
+
+std::string input_line(const std::string& id, const std::string& category, const std::array<double, 12>& x) {
+  std::string line = "{\"id\": " + json_string(id) + ", \"category\": " + json_string(category) + ", \"x\": ";
+  append_array(line, x.data(), 12);
+  line += "}";
+  return line;
+}
+
 std::string error_line(const std::string& id_json, const std::string& error) {
   return "{\"id\": " + id_json + ", \"error\": " + json_string(error) + "}";
 }

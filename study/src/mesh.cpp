@@ -57,4 +57,24 @@ MeshRow measure_mesh(methods::Method method, const ScalarType& scalar, const std
   return row;
 }
 
+SharedFit shared_fit(const std::vector<MeshRow>& mesh, ScalarType::Kind kind) {
+  SharedFit f;
+  std::vector<std::pair<std::string, std::vector<std::pair<double, double>>>> series;
+  for (const MeshRow& m : mesh) {
+    if (m.scalar.kind != kind) continue;
+    std::vector<std::pair<double, double>> points;
+    for (std::size_t i = 0; i < m.vertices.size(); ++i)
+      if (m.vertices[i] <= 81 * 81) points.emplace_back(m.vertices[i], m.seconds[i]);
+    if (points.size() >= 2) series.emplace_back(std::string(methods::method_name(m.method)), points);
+  }
+  if (series.size() < 2) return f;
+  for (const auto& [method, points] : series) f.k += fit_power_law(points).k / double(series.size());
+  for (const auto& [method, points] : series) {
+    f.ln_a.emplace_back(method, fit_ln_a(points, f.k));
+    if (method == "fast") f.fast_ln_a = f.ln_a.back().second, f.has_fast = true;
+  }
+  return f;
+}
+
+
 }  // namespace hinge::study::detail

@@ -1,51 +1,18 @@
-// study.json, study.md and the summary table (hinge/study/study.hpp), and the build's description.
-#include <gmp.h>
-#include <mpfi.h>
-#include <mpfr.h>
-
-#include <Eigen/Core>
+// study.md and the summary table (hinge/study/study.hpp); study.json is hinge::io's (hinge/io/study_json.hpp).
 #include <algorithm>
-#include <boost/version.hpp>
 #include <cmath>
 #include <cstdio>
-#include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 
-#include "build_info.hpp"
 #include "hinge/study/measure.hpp"
 #include "study_internal.hpp"
 
 namespace hinge::study {
 
-std::vector<std::pair<std::string, std::string>> build_description() {
-  return {{"version", HINGE_BUILD_VERSION},
-          {"commit", HINGE_BUILD_COMMIT},
-          {"compiler", HINGE_BUILD_COMPILER},
-          {"build_type", HINGE_BUILD_TYPE},
-          {"flags", HINGE_BUILD_FLAGS},
-          {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
-                        std::to_string(EIGEN_MINOR_VERSION)},
-          {"boost", BOOST_LIB_VERSION},
-          {"mpfr", mpfr_get_version()},
-          {"gmp", gmp_version},
-          {"mpfi", mpfi_get_version()}};
-}
-
 namespace {
 
-using json = nlohmann::ordered_json;
 constexpr const char* groups[3] = {"theta", "grad", "hess"};
-
-// Bits of error: log2(1 + units), FPBench's measure (0 for an exact result, 53 for one with no correct bit).
-double bits(double units) { return std::log2(1 + units); }
-
-json group_errors(const GroupErrors& e) {
-  json j;
-  for (int g = 0; g < 3; ++g)
-    j[groups[g]] = {{"median", e[g].median}, {"max", e[g].max}, {"max_bits", bits(e[g].max)}};
-  return j;
-}
 
 std::string label(const Row& r) { return std::string(methods::method_name(r.method)) + "/" + r.scalar.name(); }
 
@@ -78,108 +45,7 @@ std::string units(double v) {
   return b;
 }
 
-// The paper's Table 2 for one scalar type: k shared by the methods (the mean of their fitted k over the
-// paper's sizes, 11^2 .. 81^2), each method's ln a refitted with it, and the speedup of fast over each,
-// exp(ln a_M - ln a_fast). Empty when fewer than two methods have two sizes.
-struct SharedFit {
-  double k = 0;
-  std::vector<std::pair<std::string, double>> ln_a;  // method, ln a
-  double fast_ln_a = 0;
-  bool has_fast = false;
-};
-SharedFit shared_fit(const Study& s, ScalarType::Kind kind) {
-  SharedFit f;
-  std::vector<std::pair<std::string, std::vector<std::pair<double, double>>>> series;
-  for (const MeshRow& m : s.mesh) {
-    if (m.scalar.kind != kind) continue;
-    std::vector<std::pair<double, double>> points;
-    for (std::size_t i = 0; i < m.vertices.size(); ++i)
-      if (m.vertices[i] <= 81 * 81) points.emplace_back(m.vertices[i], m.seconds[i]);
-    if (points.size() >= 2) series.emplace_back(std::string(methods::method_name(m.method)), points);
-  }
-  if (series.size() < 2) return f;
-  for (const auto& [method, points] : series) f.k += fit_power_law(points).k / double(series.size());
-  for (const auto& [method, points] : series) {
-    f.ln_a.emplace_back(method, fit_ln_a(points, f.k));
-    if (method == "fast") f.fast_ln_a = f.ln_a.back().second, f.has_fast = true;
-  }
-  return f;
-}
-
 }  // namespace
-
-void write_json(std::ostream& out, const Study& s) {
-  json j;
-  j["version"] = 1;
-  j["machine"] = {{"cpu", s.cpu}, {"clock_ghz", s.clock_ghz}};
-  j["inputs"] = {{"source", s.source}, {"hinges", s.hinges}, {"skipped", s.skipped}, {"categories", s.categories}};
-  j["quick"] = s.quick;
-  j["seconds"] = s.seconds;
-  json build = json::object();
-  for (const auto& [k, v] : s.build) build[k] = v;
-  j["build"] = build;
-  j["units"] = "normwise error in units of 2^-53 (error_u) or of the type's own unit roundoff (error_own)";
-  json rows = json::array();
-  for (const Row& r : s.rows) {
-    json row;
-    row["method"] = methods::method_name(r.method);
-    row["scalar"] = r.scalar.name();
-    json t = json::object(), c = json::object();
-    for (int g = 0; g < 3; ++g)
-      if (r.ns_per_hinge[g] > 0) {
-        t[groups[g]] = r.ns_per_hinge[g];
-        if (s.clock_ghz > 0) c[groups[g]] = r.ns_per_hinge[g] * s.clock_ghz;
-      }
-    row["ns_per_hinge"] = t;
-    row["cycles_per_hinge"] = c;
-    json e = json::object(), own = json::object();
-    for (const auto& [category, errors] : r.error_u) e[category] = group_errors(errors);
-    for (const auto& [category, errors] : r.error_own) own[category] = group_errors(errors);
-    row["error_u"] = e;
-    if (!r.error_own.empty()) row["error_own"] = own;
-    row["nonfinite"] = r.nonfinite;
-    row["failed"] = r.failed;
-    row["hinges_measured"] = r.hinges;
-    row["worst_u"] = r.worst;
-    row["worst_hess_u"] = r.worst_hess;
-    row["on_frontier"] = r.on_frontier;
-    row["seconds"] = r.seconds;
-    json h = json::array();  // the Hessian's error per hinge, 3 significant digits (the histogram's data)
-    for (const double v : r.hess_errors) {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.3g", v);
-      h.push_back(std::stod(b));
-    }
-    row["hess_errors_u"] = h;
-    rows.push_back(row);
-  }
-  j["rows"] = rows;
-  json mesh = json::array();
-  for (const MeshRow& m : s.mesh) {
-    json row;
-    row["method"] = methods::method_name(m.method);
-    row["scalar"] = m.scalar.name();
-    row["vertices"] = m.vertices;
-    row["interior_edges"] = m.interior_edges;
-    row["seconds"] = m.seconds;
-    row["ns_per_edge"] = m.ns_per_edge;
-    if (m.vertices.size() >= 2) {
-      row["k"] = m.k;
-      row["ln_a"] = m.ln_a;
-    }
-    mesh.push_back(row);
-  }
-  j["mesh"] = mesh;
-  if (const SharedFit f = shared_fit(s, ScalarType::Kind::kind_double); !f.ln_a.empty()) {
-    json t = {{"scalar", "double"}, {"k", f.k}};
-    for (const auto& [method, ln_a] : f.ln_a) {
-      t["ln_a"][method] = ln_a;
-      if (f.has_fast) t["fast_speedup"][method] = std::exp(ln_a - f.fast_ln_a);
-    }
-    j["mesh_shared_k"] = t;
-  }
-  out << j.dump(1) << "\n";
-}
 
 void write_markdown(std::ostream& out, const Study& s) {
   const Row* base = baseline(s);
@@ -244,7 +110,7 @@ void write_markdown(std::ostream& out, const Study& s) {
     }
     out << "\nk and ln a: seconds per evaluation = a n^k over the sizes measured (n vertices), fitted in log-log as in\n"
            "the paper's Table 2.\n";
-    if (const SharedFit f = shared_fit(s, ScalarType::Kind::kind_double); !f.ln_a.empty()) {
+    if (const SharedFit& f = s.shared_fit; !f.ln_a.empty()) {
       out << "\nAs the paper's Table 2 (double, sizes 11^2 .. 81^2): one k for all methods, the mean of theirs, k = "
           << fixed(f.k, 3) << "; ln a refitted with it, and the speedup of fast, exp(ln a_M - ln a_fast):\n\n"
           << "| method | ln a | fast's speedup |\n|---|---:|---:|\n";

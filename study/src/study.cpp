@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "hinge/core/build_info.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "hinge/study/measure.hpp"
 #include "rows.hpp"
@@ -90,7 +91,7 @@ Study run(const Options& o) {
   s.source = o.source;
   s.cpu = detail::cpu_name();
   s.clock_ghz = clock_ghz();
-  s.build = build_description();
+  s.build = hinge::build_description();
 
   const bool builtin = o.hinges.empty();
   std::vector<std::array<double, 12>> timing;
@@ -131,6 +132,7 @@ Study run(const Options& o) {
       s.mesh.push_back(detail::measure_mesh(m, scalar, sizes, budget, o.quick));
     }
     if (o.progress) o.progress("mesh", mesh_rows.size(), mesh_rows.size());
+    s.shared_fit = detail::shared_fit(s.mesh, ScalarType::Kind::kind_double);
   }
   s.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return s;

@@ -14,6 +14,10 @@ namespace hinge::study::detail {
 MeshRow measure_mesh(methods::Method method, const ScalarType& scalar, const std::vector<int>& sizes, double budget,
                      bool quick);
 
+// The paper's Table 2 from the mesh rows of one scalar type (hinge::io::SharedFit): k shared by the methods,
+// the mean of their fitted k over the paper's sizes (11^2 .. 81^2), each method's ln a refitted with it.
+SharedFit shared_fit(const std::vector<MeshRow>& mesh, ScalarType::Kind kind);
+
 // The processor's name (/proc/cpuinfo), or "unknown".
 std::string cpu_name();
 

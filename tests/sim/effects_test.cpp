@@ -225,7 +225,7 @@ TEST(Effects, OtherMethodsGiveTheFastKernelsResultsToRounding) {
   test::Effects fast(s);
   const Evaluation f = fast.evaluate(test::coordinates(state));
   for (const char* method : {"reference", "autodiff"}) {
-    s.bending->method = methods::parse_method(method);
+    s.bending->method = parse_method(method);
     test::Effects other(s);
     const Evaluation o = other.evaluate(test::coordinates(state));
     // Each method within a few units of 2^-53 of the exact bending derivatives (docs/accuracy); the sums

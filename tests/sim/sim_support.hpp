@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "hinge/core/samples.hpp"
 #include "hinge/sim/effect.hpp"
 #include "hinge/sim/scene.hpp"
 #include "hinge/sim/simulation.hpp"

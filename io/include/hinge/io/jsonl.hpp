@@ -28,6 +28,11 @@ HingeLine parse_hinge_line(const std::string& text, long line_number);
 std::string result_line(const std::string& id_json, const RoundedTheta& r);
 std::string error_line(const std::string& id_json, const std::string& error);
 std::string invalid_line(const HingeLine& line);
+// A result line with the condition numbers of `hinge eval --cond` added: ..., "kappa": {"theta", "grad",
+// "hess"}}.
+std::string result_line(const std::string& id_json, const RoundedTheta& r, const std::array<double, 3>& kappa);
+// An input line with its category, as `hinge conform --inputs` writes them: {"id", "category", "x"}.
+std::string input_line(const std::string& id, const std::string& category, const std::array<double, 12>& x);
 
 // Calls f(HingeLine) for every non-blank line of `in`, whose first line is numbered `first_line` (a shard
 // of a larger file starts at its own line number).

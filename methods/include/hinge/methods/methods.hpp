@@ -12,24 +12,17 @@
 
 #include "hinge/core/energy.hpp"
 #include "hinge/core/mesh.hpp"
+#include "hinge/core/method.hpp"
 #include "hinge/core/results.hpp"
 #include "hinge/core/scalar.hpp"
 
 namespace hinge::methods {
 
-enum class Method {
-  reference,  // hinge::reference: eqs. (4)-(6) transcribed (mesh: hinge by hinge)
-  fast,       // hinge::fast: the lean per-hinge kernel (mesh: Algorithm 2)
-  autodiff,   // hinge::baselines: Eigen's AutoDiff on the atan2 definition (mesh: hinge by hinge, as reference)
-  symbolic,   // hinge::baselines: SymPy-generated code from the atan2 definition (mesh: as reference)
-};
-
-// "reference", "fast", "autodiff", "symbolic".
-std::string_view method_name(Method method);
-// The names, in the order above.
-std::vector<std::string> method_names();
-// Throws std::invalid_argument "unknown method 'X': expected one of reference, fast, autodiff, symbolic".
-Method parse_method(std::string_view name);
+// The methods' names live in hinge::core (hinge/core/method.hpp), beside the scalar types'.
+using hinge::Method;
+using hinge::method_name;
+using hinge::method_names;
+using hinge::parse_method;
 
 // theta, grad theta, Hess theta of the hinge x (x0.x, ..., x3.z) by `method` in `scalar`, rounded to double.
 // Throws hinge::InputError (degenerate or non-finite input) or hinge::DomainError (a result outside the range

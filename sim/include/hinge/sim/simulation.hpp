@@ -12,23 +12,13 @@
 #include <utility>
 #include <vector>
 
+#include "hinge/io/summary.hpp"
 #include "hinge/sim/scene.hpp"
 
 namespace hinge::sim {
 
-struct Summary {
-  std::string scene;
-  bool ok = true;
-  std::string reason;  // why a failed run stopped
-  std::vector<std::string> effects;  // those that ran, in the contract's order
-  std::size_t vertices = 0;
-  int steps = 0;  // completed time steps (0 for a static solve)
-  long long newton_iterations = 0;
-  double time_total = 0, time_linear_solve = 0;  // seconds; total excludes writing files
-  std::vector<std::pair<std::string, double>> time_effects;
-  std::vector<std::pair<std::string, double>> energy;  // the effects with a potential, at the last state
-  double bending_share = 0;
-};
+// What a run reports (summary.json; the format is hinge::io's: hinge/io/summary.hpp).
+using io::Summary;
 
 struct RunOptions {
   int threads = 1;  // changes no output bit

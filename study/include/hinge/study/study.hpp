@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "hinge/io/study_json.hpp"
 #include "hinge/methods/methods.hpp"
 #include "hinge/core/scalar.hpp"
 
@@ -70,58 +71,20 @@ std::vector<StudyHinge> read_hinges(const std::string& path);
 // is 0 or at least their number).
 std::vector<StudyHinge> sample(const std::vector<StudyHinge>& hinges, std::size_t count);
 
-struct ErrorStats {
-  double median = 0, max = 0;  // units of 2^-53 (error_u) or of the type's own u (error_own)
-};
-using GroupErrors = std::array<ErrorStats, 3>;  // theta, grad, hess
-
-struct Row {
-  methods::Method method = methods::Method::fast;
-  ScalarType scalar;
-  std::array<double, 3> ns_per_hinge{};            // theta; theta and gradient; all three (0: not timed)
-  std::map<std::string, GroupErrors> error_u;      // per category, outputs rounded to double
-  std::map<std::string, GroupErrors> error_own;    // per category, types wider than double
-  std::vector<double> hess_errors;                 // per hinge measured (units of 2^-53), for the histogram
-  std::size_t hinges = 0;     // hinges whose errors were measured (fewer than all when the budget ran out)
-  std::size_t failed = 0;     // reported as not evaluable (an InputError or DomainError)
-  std::size_t nonfinite = 0;  // returned a NaN or an infinity, or a value outside double's range
-  double seconds = 0;         // what the row took
-  bool on_frontier = false;   // no other row is both faster (theta, gradient and Hessian) and more accurate
-  double worst = 0;           // the largest error of any output group and category (units of 2^-53)
-  double worst_hess = 0;      // the largest Hessian error of any category
-};
-
-struct MeshRow {
-  methods::Method method = methods::Method::fast;
-  ScalarType scalar;
-  std::vector<double> vertices, interior_edges, seconds;  // per size: n^2, hinges, seconds per evaluation
-  std::vector<double> ns_per_edge;
-  double k = 0, ln_a = 0;  // seconds per evaluation = a vertices^k, fitted in log-log (needs two sizes)
-};
-
-struct Study {
-  std::string cpu;
-  double clock_ghz = 0;
-  std::string source;
-  std::size_t hinges = 0, skipped = 0;  // skipped: input hinges the oracle rejects (degenerate, ...)
-  std::vector<std::string> categories;
-  std::vector<Row> rows;
-  std::vector<MeshRow> mesh;
-  std::vector<std::pair<std::string, std::string>> build;  // version, commit, compiler, flags, libraries
-  bool quick = false;
-  double seconds = 0;
-};
+// What a study measured: the types of study.json (hinge/io/study_json.hpp), by the study's names.
+using io::ErrorStats;
+using io::GroupErrors;
+using io::SharedFit;
+using io::Study;
+using Row = io::StudyRow;
+using MeshRow = io::StudyMeshRow;
 
 // Runs the study. Throws std::invalid_argument when the methods and scalar types leave nothing to study,
 // hinge::InputError when no input hinge can be certified.
 Study run(const Options& options);
 
-// How this build was made, for study.json and the simulator's summary.json: version, commit, compiler,
-// build type, flags, library versions.
-std::vector<std::pair<std::string, std::string>> build_description();
 
-// study.json (docs/contract.md), study.md (the same tables in Markdown), the summary table printed.
-void write_json(std::ostream& out, const Study& s);
+// study.md (the tables of study.json, hinge::io::write_study_json, in Markdown), the summary table printed.
 void write_markdown(std::ostream& out, const Study& s);
 void print_summary(std::ostream& out, const Study& s);
 

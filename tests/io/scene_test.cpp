@@ -2,11 +2,24 @@
 // naming the file and the key (the contract's "hinge simulate and scene files").
 #include <gtest/gtest.h>
 
-#include "hinge/core/errors.hpp"
-#include "sim_support.hpp"
+#include <filesystem>
+#include <fstream>
+#include <string>
 
-namespace hinge::sim {
+#include "hinge/core/errors.hpp"
+#include "hinge/io/scene.hpp"
+
+namespace hinge::io {
 namespace {
+
+// A scene file written into a fresh folder under the system's temporary directory.
+std::filesystem::path write_scene(const std::string& name, const std::string& json) {
+  const auto dir = std::filesystem::temp_directory_path() / ("hinge-io-scene-test-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "scene.json") << json;
+  return dir / "scene.json";
+}
 
 const std::string kValid = R"({"scene": 1, "name": "t",
  "mesh": {"grid": {"vertices": [3, 2], "size": [2, 1], "center": [0, 0, 1], "plane": "xz"}},
@@ -23,7 +36,7 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
 
 // The message of the InputError that reading `json` raises ("" if none).
 std::string error_of(const std::string& json) {
-  const auto path = test::write_scene("scene", json);
+  const auto path = write_scene("scene", json);
   try {
     read_scene(path.string());
   } catch (const InputError& e) {
@@ -33,7 +46,7 @@ std::string error_of(const std::string& json) {
 }
 
 TEST(Scene, AValidSceneReadsWithExactlyTheEffectsItNames) {
-  const Scene s = read_scene(test::write_scene("valid", kValid).string());
+  const Scene s = read_scene(write_scene("valid", kValid).string());
   EXPECT_TRUE(s.gravity && s.pins);
   EXPECT_FALSE(s.stretching || s.bending || s.damping || s.sphere || s.load);
   EXPECT_EQ(s.solve.mode, Mode::dynamic);
@@ -44,7 +57,7 @@ TEST(Scene, AValidSceneReadsWithExactlyTheEffectsItNames) {
 }
 
 TEST(Scene, GridFollowsTheContract) {
-  const Scene s = read_scene(test::write_scene("grid", kValid).string());
+  const Scene s = read_scene(write_scene("grid", kValid).string());
   ASSERT_EQ(s.mesh.vertices.size(), 6u);
   // vertex i + nx j at center + (i/(nx-1) - 1/2) lx a + (j/(ny-1) - 1/2) ly b, plane xz: a = x, b = z
   EXPECT_EQ(s.mesh.vertices[0], (Vec3{-1, 0, 0.5}));
@@ -91,4 +104,4 @@ TEST(Scene, BadValuesAreErrorsNamingTheKey) {
 }
 
 }  // namespace
-}  // namespace hinge::sim
+}  // namespace hinge::io

@@ -1,5 +1,5 @@
-// Reading a scene file strictly (hinge/sim/scene.hpp).
-#include "hinge/sim/scene.hpp"
+// Reading a scene file strictly (hinge/io/scene.hpp).
+#include "hinge/io/scene.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -12,11 +12,12 @@
 
 #include "hinge/core/bending_problem.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/core/method.hpp"
+#include "hinge/core/samples.hpp"
 #include "hinge/core/scalar.hpp"
 #include "hinge/io/obj.hpp"
-#include "hinge/methods/methods.hpp"
 
-namespace hinge::sim {
+namespace hinge::io {
 
 namespace {
 
@@ -151,7 +152,7 @@ class Object {
 Mesh read_mesh_file(Object& o, const std::string& key, const std::filesystem::path& folder) {
   const std::string name = o.string(key);
   try {
-    return io::read_obj((folder / name).string());
+    return read_obj((folder / name).string());
   } catch (const InputError& e) {
     o.fail_at(o.key_path(key), e.what());
   }
@@ -185,30 +186,6 @@ Mesh read_mesh_object(Object& mesh, const std::filesystem::path& folder, Vec3& v
 }
 
 }  // namespace
-
-Mesh grid_mesh(int nx, int ny, double lx, double ly, const Vec3& center, const std::string& plane) {
-  if (nx < 2 || ny < 2 || !(lx > 0) || !(ly > 0)) throw std::invalid_argument("grid: expected nx, ny >= 2 and positive sizes");
-  int a = 0, b = 1;
-  if (plane == "xz") b = 2;
-  else if (plane == "yz") a = 1, b = 2;
-  else if (plane != "xy") throw std::invalid_argument("grid: unknown plane '" + plane + "'");
-  Mesh m;
-  m.vertices.resize(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      Vec3 p = center;
-      p[static_cast<std::size_t>(a)] += (static_cast<double>(i) / (nx - 1) - 0.5) * lx;
-      p[static_cast<std::size_t>(b)] += (static_cast<double>(j) / (ny - 1) - 0.5) * ly;
-      m.vertices[static_cast<std::size_t>(i + nx * j)] = p;
-    }
-  for (int j = 0; j + 1 < ny; ++j)
-    for (int i = 0; i + 1 < nx; ++i) {
-      const Index p = i + nx * j, q = p + 1, r = q + nx, s = p + nx;
-      m.faces.push_back({p, q, r});
-      m.faces.push_back({p, r, s});
-    }
-  return m;
-}
 
 Scene read_scene(const std::string& path) {
   std::ifstream in(path);
@@ -328,7 +305,7 @@ Scene read_scene(const std::string& path) {
       if (e.has("method")) {
         const std::string method = e.string("method");
         try {
-          b.method = methods::parse_method(method);
+          b.method = parse_method(method);
         } catch (const std::invalid_argument& err) {
           e.fail_at(e.key_path("method"), err.what());
         }
@@ -363,7 +340,7 @@ Scene read_scene(const std::string& path) {
       if (d.bending > 0) {
         if (!s.bending || s.bending->energy != Model::tan)
           fx.fail_at("effects.damping.bending", "needs effects.bending with \"energy\": \"tan\" (the paper's section 5 is written for it)");
-        if (s.solve.hessian == HessianTreatment::exact && (s.bending->method != methods::Method::fast || s.bending->scalar.kind != ScalarType::Kind::kind_double))
+        if (s.solve.hessian == HessianTreatment::exact && (s.bending->method != Method::fast || s.bending->scalar.kind != ScalarType::Kind::kind_double))
           fx.fail_at("effects.damping.bending", "with \"hessian\": \"exact\" needs the bending method fast in double");
       }
       s.damping = d;
@@ -412,4 +389,4 @@ Scene read_scene(const std::string& path) {
   return s;
 }
 
-}  // namespace hinge::sim
+}  // namespace hinge::io

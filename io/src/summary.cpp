@@ -1,9 +1,9 @@
-// summary.json (hinge/sim/summary.hpp).
-#include "hinge/sim/summary.hpp"
+// summary.json (hinge/io/summary.hpp).
+#include "hinge/io/summary.hpp"
 
 #include <nlohmann/json.hpp>
 
-namespace hinge::sim {
+namespace hinge::io {
 
 std::string summary_json(const Summary& s, const std::vector<std::pair<std::string, std::string>>& build) {
   using json = nlohmann::ordered_json;  // numbers as the shortest decimal that reads back exactly
@@ -28,4 +28,4 @@ std::string summary_json(const Summary& s, const std::vector<std::pair<std::stri
   return j.dump(2) + "\n";
 }
 
-}  // namespace hinge::sim
+}  // namespace hinge::io
