@@ -61,24 +61,24 @@ const std::vector<std::array<double, 12>>& bench_hinges() {
   return h;
 }
 
-void hinge_fast(benchmark::State& state) {
+// `evaluate(x)` on every benchmark hinge, one call each, per iteration.
+template <class Evaluate>
+void per_hinge(benchmark::State& state, Evaluate&& evaluate) {
   const auto& hs = bench_hinges();
   for (auto _ : state)
     for (const auto& x : hs) {
-      auto d = fast::hinge_derivatives<double>(x);
+      auto d = evaluate(x);
       benchmark::DoNotOptimize(d);
     }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
 }
 
+void hinge_fast(benchmark::State& state) {
+  per_hinge(state, [](const auto& x) { return fast::hinge_derivatives<double>(x); });
+}
+
 void hinge_faithful(benchmark::State& state) {
-  const auto& hs = bench_hinges();
-  for (auto _ : state)
-    for (const auto& x : hs) {
-      auto d = fast::faithful_hinge_derivatives(x);
-      benchmark::DoNotOptimize(d);
-    }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+  per_hinge(state, [](const auto& x) { return fast::faithful_hinge_derivatives(x); });
 }
 
 // One hinge a call, the kernel compiled for `isa`.
@@ -177,25 +177,13 @@ void hinge_fast_many(benchmark::State& state) {
 // The certified oracle, one hinge a call: with its fast path (the default), and with the exact stage and
 // enclosures alone (what every hinge cost before the fast path).
 void hinge_oracle(benchmark::State& state, bool fast_path) {
-  const auto& hs = bench_hinges();
   oracle::Options options;
   options.fast_path = fast_path;
-  for (auto _ : state)
-    for (const auto& x : hs) {
-      auto c = oracle::certified_theta_derivatives(x, options);
-      benchmark::DoNotOptimize(c);
-    }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+  per_hinge(state, [&](const auto& x) { return oracle::certified_theta_derivatives(x, options); });
 }
 
 void hinge_reference(benchmark::State& state) {
-  const auto& hs = bench_hinges();
-  for (auto _ : state)
-    for (const auto& x : hs) {
-      auto d = reference::theta_derivatives<double>(x);
-      benchmark::DoNotOptimize(d);
-    }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(hs.size()));
+  per_hinge(state, [](const auto& x) { return reference::theta_derivatives<double>(x); });
 }
 
 // ---- a whole cloth -----------------------------------------------------------------------------------

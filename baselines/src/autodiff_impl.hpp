@@ -1,4 +1,4 @@
-// hinge::baselines::autodiff_derivatives (hinge/baselines/autodiff.hpp): Eigen's forward-mode AutoDiff on
+// hinge::baselines::autodiff_derivatives (hinge/baselines/derivatives.hpp): Eigen's forward-mode AutoDiff on
 // the atan2 definition, nested once for the Hessian. Instantiated per scalar family (autodiff_*.cpp).
 #pragma once
 
@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "common.hpp"
-#include "hinge/baselines/autodiff.hpp"
+#include "hinge/baselines/derivatives.hpp"
 
 namespace hinge::baselines {
 namespace detail {
@@ -66,9 +66,7 @@ T theta_of(const std::array<T, 12>& p) {
 template <HingeScalar Scalar>
 Derivatives<Scalar> autodiff_derivatives(const std::array<double, 12>& x, Outputs outputs) {
   const std::array<Scalar, 12> s = detail::checked_coordinates<Scalar>(x);
-  Derivatives<Scalar> d;
-  d.grad.setZero();
-  d.hess.setZero();
+  Derivatives<Scalar> d = detail::zero_derivatives<Scalar>();
   using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<Scalar, 12, 1>>;
   try {
     switch (outputs) {

@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "hinge/baselines/derivatives.hpp"
 #include "hinge/core/hinge_checks.hpp"
 #include "hinge/core/scalar.hpp"
 
@@ -22,6 +23,15 @@ std::array<Scalar, 12> checked_coordinates(const std::array<double, 12>& x) {
   std::array<Scalar, 12> s;
   for (int i = 0; i < 12; ++i) s[i] = from_double<Scalar>(x[i]);
   return s;
+}
+
+// The derivatives a baseline fills: gradient and Hessian zero until written (and where not asked for).
+template <HingeScalar Scalar>
+Derivatives<Scalar> zero_derivatives() {
+  Derivatives<Scalar> d;
+  d.grad.setZero();
+  d.hess.setZero();
+  return d;
 }
 
 // atan2(-0, x < 0) is -pi; the contract's branch cut is +pi (the same angle).

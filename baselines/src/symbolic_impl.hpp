@@ -1,10 +1,10 @@
-// hinge::baselines::symbolic_derivatives (hinge/baselines/symbolic.hpp): the code SymPy generated
+// hinge::baselines::symbolic_derivatives (hinge/baselines/derivatives.hpp): the code SymPy generated
 // (symbolic_theta.inc, from symbolic_theta.py), called per output level. Instantiated per scalar family
 // (symbolic_*.cpp).
 #pragma once
 
 #include "common.hpp"
-#include "hinge/baselines/symbolic.hpp"
+#include "hinge/baselines/derivatives.hpp"
 
 namespace hinge::baselines {
 namespace generated {
@@ -30,9 +30,7 @@ S theta_atan2(const S& y, const S& x) {
 template <HingeScalar Scalar>
 Derivatives<Scalar> symbolic_derivatives(const std::array<double, 12>& x, Outputs outputs) {
   const std::array<Scalar, 12> s = detail::checked_coordinates<Scalar>(x);
-  Derivatives<Scalar> d;
-  d.grad.setZero();
-  d.hess.setZero();
+  Derivatives<Scalar> d = detail::zero_derivatives<Scalar>();
   switch (outputs) {
     case Outputs::theta: generated::symbolic_theta(s.data(), d.theta); break;
     case Outputs::gradient: generated::symbolic_theta_gradient(s.data(), d.theta, d.grad.data()); break;

@@ -21,21 +21,19 @@ void write_mesh(const std::filesystem::path& path, const Mesh& m, const std::str
 }
 
 std::string hinge_line(const Expected& e) {
-  const Case& c = e.input;
-  std::string line = "{\"id\": " + io::json_string(c.id) + ", \"category\": " + io::json_string(c.category) + ", \"x\": ";
-  io::append_array(line, c.x.data(), 12);
-  line += ", \"theta\": ";
-  io::append_double(line, e.values.theta);
-  line += ", \"grad\": ";
-  io::append_array(line, e.values.grad.data(), 12);
-  line += ", \"hess\": ";
-  io::append_array(line, e.values.hess.data(), 144);
-  line += ", \"length\": ";
-  io::append_double(line, e.conditioning.length);
-  line += ", \"scale\": ";
-  io::append_array(line, e.conditioning.scale.data(), 3);
-  line += ", \"kappa\": ";
-  io::append_array(line, e.conditioning.kappa.data(), 3);
+  std::string line = io::input_line(e.input.id, e.input.category, e.input.x);
+  line.pop_back();  // '}'
+  const auto numbers = [&](const char* key, const double* values, std::size_t count) {
+    line += std::string(", \"") + key + "\": ";
+    if (count == 1) io::append_double(line, *values);
+    else io::append_array(line, values, count);
+  };
+  numbers("theta", &e.values.theta, 1);
+  numbers("grad", e.values.grad.data(), 12);
+  numbers("hess", e.values.hess.data(), 144);
+  numbers("length", &e.conditioning.length, 1);
+  numbers("scale", e.conditioning.scale.data(), 3);
+  numbers("kappa", e.conditioning.kappa.data(), 3);
   line += ", \"bits\": " + std::to_string(e.values.bits) + "}\n";
   return line;
 }

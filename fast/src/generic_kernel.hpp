@@ -231,12 +231,12 @@ HINGE_FAST_INLINE void triangles(const Vec<W>& f0, const Vec<W>& f1, const Vec<W
       member(T)[k] = v[0];
       member(U)[k] = v[1];
     };
-    set([](HingeTriangle<Scalar>& t) -> auto& { return t.n; }, product_rounded<Scalar>(C[k], rA));
-    set([](HingeTriangle<Scalar>& t) -> auto& { return t.q[0]; }, product_rounded<Scalar>(X0[k], invS));
-    set([](HingeTriangle<Scalar>& t) -> auto& { return t.q[1]; }, product_rounded<Scalar>(X1[k], invS));
-    set([](HingeTriangle<Scalar>& t) -> auto& { return t.q[2]; }, product_rounded<Scalar>(X2[k], invS));
+    set([](auto& t) -> auto& { return t.n; }, product_rounded<Scalar>(C[k], rA));
+    set([](auto& t) -> auto& { return t.q[0]; }, product_rounded<Scalar>(X0[k], invS));
+    set([](auto& t) -> auto& { return t.q[1]; }, product_rounded<Scalar>(X1[k], invS));
+    set([](auto& t) -> auto& { return t.q[2]; }, product_rounded<Scalar>(X2[k], invS));
     // r_0 = m_0 / l_0^2 with m_0 = X0 K: never 1 / (l_0^3 2A), which can overflow when r_0 does not
-    set([](HingeTriangle<Scalar>& t) -> auto& { return t.r0; }, product_rounded<Scalar>(X0[k] * K, RL));
+    set([](auto& t) -> auto& { return t.r0; }, product_rounded<Scalar>(X0[k] * K, RL));
   }
   const std::array<Scalar, 2> a0 = product_rounded<Scalar>(L0, K);  // 1/h_0 = l_0 / (2A)
   const std::array<Scalar, 2> a1 = product_rounded<Scalar>(D2, K);  // cos(alpha_2)/h_1 = -(e_0 . e_1) / (l_0 2A)

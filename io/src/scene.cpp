@@ -46,6 +46,16 @@ class Object {
       throw InputError(file_ + ": " + e.what());
     }
   }
+  // A name parsed by `parse` (std::invalid_argument naming what it expects): "FILE: KEY: why".
+  template <class Parse>
+  auto parsed(const std::string& key, Parse&& parse) {
+    const std::string value = string(key);
+    try {
+      return parse(value);
+    } catch (const std::invalid_argument& e) {
+      fail_at(key_path(key), e.what());
+    }
+  }
   double checked_number(const std::string& key, double (*check)(Parameter)) {
     const double value = number(key);
     const std::string path = key_path(key);
@@ -302,22 +312,8 @@ Scene read_scene(const std::string& path) {
                                          {s.material.thickness, "material.thickness"});
         });
       }
-      if (e.has("method")) {
-        const std::string method = e.string("method");
-        try {
-          b.method = parse_method(method);
-        } catch (const std::invalid_argument& err) {
-          e.fail_at(e.key_path("method"), err.what());
-        }
-      }
-      if (e.has("scalar")) {
-        const std::string scalar = e.string("scalar");
-        try {
-          b.scalar = parse_scalar_type(scalar);
-        } catch (const std::invalid_argument& err) {
-          e.fail_at(e.key_path("scalar"), err.what());
-        }
-      }
+      if (e.has("method")) b.method = e.parsed("method", parse_method);
+      if (e.has("scalar")) b.scalar = e.parsed("scalar", parse_scalar_type);
       e.done();
       s.bending = b;
     }

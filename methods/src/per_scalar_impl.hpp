@@ -7,8 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "hinge/baselines/autodiff.hpp"
-#include "hinge/baselines/symbolic.hpp"
+#include "hinge/baselines/derivatives.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/reference/assemble_impl.hpp"
 #include "hinge/core/rounding.hpp"

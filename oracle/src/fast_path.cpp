@@ -83,7 +83,8 @@ struct ArctanTable {
 // remainder is below |z|^19 / 19 (alternating, decreasing).
 Bounded arctan(const Bounded& t) {
   static const ArctanTable table;
-  const bool negative = t.hi < 0, inverted = std::fabs(t.hi) > 1;
+  const bool negative = t.hi < 0;
+  const bool inverted = std::fabs(t.hi) > 1;
   Bounded a = negative ? -t : t;
   if (inverted) a = reciprocal(a);
   if (!(std::isfinite(a.hi) && a.hi >= 0 && a.hi <= 1)) return undefined();

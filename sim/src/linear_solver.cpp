@@ -11,7 +11,7 @@ template <class Factorization>
 class EigenSolver final : public SparseSolver {
  public:
   EigenSolver() {
-    if constexpr (requires(Factorization& f) { f.cholmod(); })
+    if constexpr (requires { f_.cholmod(); })
       f_.cholmod().print = 0;  // a failed factorization is reported to the caller, not printed by CHOLMOD
   }
   void analyze(const Eigen::SparseMatrix<double>& upper) override { f_.analyzePattern(upper); }

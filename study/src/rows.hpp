@@ -14,8 +14,7 @@
 #include <optional>
 #include <vector>
 
-#include "hinge/baselines/autodiff.hpp"
-#include "hinge/baselines/symbolic.hpp"
+#include "hinge/baselines/derivatives.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/conformance/grading.hpp"
 #include "hinge/reference/rounded.hpp"
@@ -23,13 +22,9 @@
 
 namespace hinge::study::detail {
 
-// theta, grad theta and Hess theta of one hinge in Scalar.
+// theta, grad theta and Hess theta of one hinge in Scalar (the baselines' type, for every method).
 template <class Scalar>
-struct Outputs {
-  Scalar theta;
-  Eigen::Matrix<Scalar, 12, 1> grad;
-  Eigen::Matrix<Scalar, 12, 12> hess;
-};
+using Outputs = baselines::Derivatives<Scalar>;
 
 template <class Scalar>
 Outputs<Scalar> evaluate(methods::Method method, const std::array<double, 12>& x) {

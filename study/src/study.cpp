@@ -3,6 +3,7 @@
 #include <chrono>
 #include <fstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "hinge/core/build_info.hpp"
 #include "hinge/reference/evaluate.hpp"
@@ -70,7 +71,7 @@ void mark_frontier(std::vector<Row>& rows) {
 std::vector<ScalarType> default_scalars(bool quick) {
   std::vector<ScalarType> s;
   for (const char* name : {"float", "double", "long-double", "dd", "qd", "float128", "bin128", "mpfr:128", "mpfr:256"})
-    s.push_back(parse_scalar_type(name));
+    if (HINGE_HAVE_FLOAT128 || std::string_view(name) != "float128") s.push_back(parse_scalar_type(name));
   if (!quick) s.push_back(parse_scalar_type("mpfr:512"));
   return s;
 }

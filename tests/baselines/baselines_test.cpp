@@ -4,8 +4,7 @@
 // exact validity checks and branch cut.
 #include <gtest/gtest.h>
 
-#include "hinge/baselines/autodiff.hpp"
-#include "hinge/baselines/symbolic.hpp"
+#include "hinge/baselines/derivatives.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "support/hinges.hpp"
 #include "support/tolerance.hpp"
@@ -15,7 +14,7 @@ namespace {
 
 template <class Scalar>
 class Baselines : public ::testing::Test {};
-using Types = ::testing::Types<float, double, long double, dd, qd, float128, bin128, mpfr>;
+using Types = ::testing::Types<HINGE_SCALAR_TYPES>;  // every type this build has (hinge/core/scalar_list.hpp)
 TYPED_TEST_SUITE(Baselines, Types);
 
 constexpr unsigned test_bits = 113, exact_bits = 256;

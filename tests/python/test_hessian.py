@@ -2,6 +2,7 @@
 arguments and invalid meshes raise ValueError naming what is wrong."""
 
 import os
+import sys
 
 import numpy as np
 import pytest
@@ -9,20 +10,10 @@ import scipy.io
 import scipy.sparse
 
 import hinge
-from conftest import MESHES
+from conftest import MESHES, ROOT
 
-
-def read_obj(path):
-    """v and f lines of the committed test meshes (1-based faces; no other statement in them)."""
-    vertices, faces = [], []
-    with open(path) as f:
-        for line in f:
-            fields = line.split()
-            if fields and fields[0] == "v":
-                vertices.append([float(t) for t in fields[1:4]])
-            elif fields and fields[0] == "f":
-                faces.append([int(t.split("/")[0]) - 1 for t in fields[1:4]])
-    return np.array(vertices), np.array(faces)
+sys.path.insert(0, os.path.join(ROOT, "scenes"))
+from objmesh import read_obj  # noqa: E402 (the scene scripts' OBJ reader)
 
 
 def write_obj(path, vertices, faces):

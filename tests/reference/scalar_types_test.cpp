@@ -12,7 +12,7 @@ namespace {
 
 template <class Scalar>
 class ScalarTypes : public ::testing::Test {};
-using Types = ::testing::Types<float, double, long double, dd, qd, float128, bin128, mpfr>;
+using Types = ::testing::Types<HINGE_SCALAR_TYPES>;  // every type this build has (hinge/core/scalar_list.hpp)
 TYPED_TEST_SUITE(ScalarTypes, Types);
 
 // The precision `mpfr` runs at in these tests, and the reference precision.

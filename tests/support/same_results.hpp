@@ -1,5 +1,5 @@
 // tests/support/same_results.hpp: bit-for-bit comparison of the certified oracle's results (so +0 and -0
-// differ), for the tests of its fast path (tests/conformance/oracle_fast_path_test.cpp,
+// differ), for the tests of its fast path (tests/oracle/oracle_fast_path_test.cpp,
 // tests/properties/oracle_properties.cpp). Each returns "" when the two agree, else the first difference.
 #pragma once
 

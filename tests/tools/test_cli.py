@@ -151,7 +151,7 @@ def test_hinge_isa_selects_the_double_kernels_with_the_same_bits_and_rejects_unk
 
 
 def test_numbers_read_back_exactly_and_look_like_doubles():
-    code, out, _ = run(["eval", "--scalar", "float128"], open(os.path.join(EXAMPLES, "eval-input.jsonl")).read())
+    code, out, _ = run(["eval", "--scalar", "bin128"], open(os.path.join(EXAMPLES, "eval-input.jsonl")).read())
     assert code == 0
     for token in out.replace("[", " ").replace("]", " ").replace(",", " ").split():
         if token[0] in "-0123456789":

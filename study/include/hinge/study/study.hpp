@@ -53,7 +53,7 @@ struct Options {
   ProgressFn progress;
 };
 
-// The scalar types studied by default: float, double, long-double, dd, qd, float128, bin128, mpfr:128,
+// The scalar types studied by default: float, double, long-double, dd, qd, float128 (where built), bin128, mpfr:128,
 // mpfr:256 (and mpfr:512 in the full study).
 std::vector<ScalarType> default_scalars(bool quick);
 
