@@ -1,13 +1,13 @@
-// cloth_obj N SEED FILE: writes the benchmark's N x N cloth (hinge/core/samples.hpp) as an OBJ file (seed 1: the rest state,
-// seed 2: the deformed state of the benchmarks), for timing whole processes such as
-// `hinge hessian --mesh deformed.obj --rest rest.obj --repeat R` (bench/README.md).
+// cloth_obj N SEED FILE: writes the benchmark's N x N cloth (hinge/core/samples.hpp) as an OBJ file (seed 1: the rest
+// state, seed 2: the deformed state of the benchmarks), for timing whole processes such as `hinge hessian --mesh
+// deformed.obj --rest rest.obj --repeat R` (bench/README.md).
 #include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <string>
 
-#include "hinge/io/obj.hpp"
 #include "hinge/core/samples.hpp"
+#include "hinge/io/obj.hpp"
 
 int main(int argc, char** argv) {
   int n = 0;

@@ -37,13 +37,13 @@
 #include <vector>
 
 #include "hinge/candidate.h"
+#include "hinge/core/samples.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/fast/faithful.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/oracle/oracle.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
-#include "hinge/core/samples.hpp"
 #include "hinge/study/measure.hpp"
 
 namespace hinge::bench {
@@ -278,16 +278,20 @@ class Capture : public benchmark::ConsoleReporter {
 };
 
 // Least-squares slope of log t against log n.
-double fitted_exponent(const std::vector<std::pair<double, double>>& points) { return hinge::study::fit_power_law(points).k; }
+double fitted_exponent(const std::vector<std::pair<double, double>>& points) {
+  return hinge::study::fit_power_law(points).k;
+}
 
 std::string mesh_name(const char* method, int n, int threads) {
-  return std::string("mesh/") + method + "/n:" + std::to_string(n) + "/threads:" + std::to_string(threads) + "/real_time";
+  return std::string("mesh/") + method + "/n:" + std::to_string(n) + "/threads:" + std::to_string(threads) +
+         "/real_time";
 }
 
 void summary(const Capture& c, const std::vector<int>& sides, double ghz_before, double ghz_after) {
   std::printf("\n== summary (double; real time per iteration, median over repetitions) ==\n");
   const double ghz = (ghz_before + ghz_after) / 2;  // cycles below at the mean of the two readings
-  if (ghz > 0) std::printf("clock: %.2f GHz before the runs, %.2f GHz after (dependent additions)\n", ghz_before, ghz_after);
+  if (ghz > 0)
+    std::printf("clock: %.2f GHz before the runs, %.2f GHz after (dependent additions)\n", ghz_before, ghz_after);
   const auto hf = c.get("hinge/fast"), hm = c.get("hinge/fast_many"), hr = c.get("hinge/reference");
   if (hf && hr) {
     std::printf("per hinge: fast %.1f ns, reference %.1f ns, fast/reference %.3f", 1e9 * hf->seconds / 1024,
@@ -302,7 +306,8 @@ void summary(const Capture& c, const std::vector<int>& sides, double ghz_before,
     std::printf("\n");
   }
   if (const auto hq = c.get("hinge/faithful"); hq && hf) {
-    std::printf("per hinge, faithful mode: %.1f ns, faithful/fast %.2f", 1e9 * hq->seconds / 1024, hq->seconds / hf->seconds);
+    std::printf("per hinge, faithful mode: %.1f ns, faithful/fast %.2f", 1e9 * hq->seconds / 1024,
+                hq->seconds / hf->seconds);
     if (ghz > 0) std::printf(" (%.0f cycles)", ghz * 1e9 * hq->seconds / 1024);
     std::printf("\n");
   }
@@ -315,11 +320,13 @@ void summary(const Capture& c, const std::vector<int>& sides, double ghz_before,
     std::printf("\n");
   }
   if (const auto cf = c.get("capi/fast"), floor = c.get("capi/floor"); cf && floor) {
-    std::printf("C interface, 1e5 hinges one call each: fast %.1f ns per hinge, memory floor %.1f ns, fast/floor %.2f\n",
-                1e9 * cf->seconds / kCapiHinges, 1e9 * floor->seconds / kCapiHinges, cf->seconds / floor->seconds);
+    std::printf(
+        "C interface, 1e5 hinges one call each: fast %.1f ns per hinge, memory floor %.1f ns, fast/floor %.2f\n",
+        1e9 * cf->seconds / kCapiHinges, 1e9 * floor->seconds / kCapiHinges, cf->seconds / floor->seconds);
     if (const auto many = c.get("capi/many"))
-      std::printf("the same 1e5 hinges in one library call (hinge_derivatives over a span): %.1f ns per hinge, /floor %.2f\n",
-                  1e9 * many->seconds / kCapiHinges, many->seconds / floor->seconds);
+      std::printf(
+          "the same 1e5 hinges in one library call (hinge_derivatives over a span): %.1f ns per hinge, /floor %.2f\n",
+          1e9 * many->seconds / kCapiHinges, many->seconds / floor->seconds);
   }
   if (const auto best = c.get("hinge/isa:avx512")) {
     std::printf("per hinge by instruction set (one call per hinge): avx512 %.1f ns", 1e9 * best->seconds / 1024);
@@ -400,7 +407,8 @@ int main(int argc, char** argv) {
   // machine's moves by ~10% within an hour) falls on every size alike and not on the fitted k.
   std::vector<char*> args(argv, argv + argc);
   auto given = [&](const char* flag) {
-    return std::any_of(args.begin(), args.end(), [flag](const char* a) { return std::strncmp(a, flag, std::strlen(flag)) == 0; });
+    return std::any_of(args.begin(), args.end(),
+                       [flag](const char* a) { return std::strncmp(a, flag, std::strlen(flag)) == 0; });
   };
   static char repetitions[] = "--benchmark_repetitions=5", interleave[] = "--benchmark_enable_random_interleaving=true";
   if (!given("--benchmark_repetitions")) args.push_back(repetitions);

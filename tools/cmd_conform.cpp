@@ -15,6 +15,11 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "hinge/conformance/plugin.hpp"
+#include "hinge/conformance/report.hpp"
+#include "hinge/conformance/vectors.hpp"
+#include "hinge/core/bending_problem.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/eval_output.hpp"
 #include "hinge/io/jsonl.hpp"
@@ -22,11 +27,6 @@
 #include "hinge/io/number.hpp"
 #include "hinge/io/obj.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/conformance/report.hpp"
-#include "hinge/conformance/vectors.hpp"
-#include "hinge/conformance/plugin.hpp"
-#include "hinge/core/bending_problem.hpp"
-#include "hinge/core/errors.hpp"
 #include "progress.hpp"
 
 namespace hinge::tools {
@@ -67,12 +67,13 @@ std::vector<conf::Case> selected_inputs(const ConformOptions& o) {
 // One line per case: errors and tolerances (--verbose).
 void print_cases(std::ostream& out, const std::vector<conf::CaseOutcome>& outcomes) {
   char line[512];
-  std::snprintf(line, sizeof line, "%-44s %-4s %10s %10s %10s %10s %10s %10s\n", "case", "", "theta", "(tol)", "grad", "(tol)",
-                "hess", "(tol)");
+  std::snprintf(line, sizeof line, "%-44s %-4s %10s %10s %10s %10s %10s %10s\n", "case", "", "theta", "(tol)", "grad",
+                "(tol)", "hess", "(tol)");
   out << line;
   for (const auto& o : outcomes) {
     std::snprintf(line, sizeof line, "%-44s %-4s %10.3g %10.3g %10.3g %10.3g %10.3g %10.3g\n", o.id.c_str(),
-                  o.pass ? "ok" : "FAIL", o.error[0], o.tolerance[0], o.error[1], o.tolerance[1], o.error[2], o.tolerance[2]);
+                  o.pass ? "ok" : "FAIL", o.error[0], o.tolerance[0], o.error[1], o.tolerance[1], o.error[2],
+                  o.tolerance[2]);
     out << line;
   }
   out << '\n';
@@ -147,7 +148,8 @@ int run_cases(const ConformOptions& o) {
   }
   if (saved) saved->commit();
   if (!o.candidate.empty() && unknown > 0 && o.categories.empty())
-    std::cerr << "hinge conform: " << unknown << " line(s) of the candidate have ids that are not conformance cases (ignored)\n";
+    std::cerr << "hinge conform: " << unknown
+              << " line(s) of the candidate have ids that are not conformance cases (ignored)\n";
   if (o.verbose) print_cases(std::cout, outcomes);
   const bool pass = conf::print_report(std::cout, outcomes, o.policy, name);
   if (json) {
@@ -155,7 +157,8 @@ int run_cases(const ConformOptions& o) {
     json->commit();
   }
   if (!not_survived.empty()) {
-    std::cout << "\nthe plugin did not survive " << not_survived.size() << " case(s) (each failed; its process was started again):\n";
+    std::cout << "\nthe plugin did not survive " << not_survived.size()
+              << " case(s) (each failed; its process was started again):\n";
     for (const auto& line : not_survived) std::cout << "  " << line << "\n";
   }
   return pass && not_survived.empty() ? exit_done : exit_invalid_input;
@@ -247,8 +250,9 @@ Action add_conform(CLI::App& app) {
   cmd->add_option("--method", o->method, "Check one of hinge eval's methods: reference, fast, autodiff, symbolic");
   cmd->add_option("--scalar", o->scalar, "With --method: its scalar type")->capture_default_str();
   cmd->add_option("--save", o->save, "With --plugin or --method: also write its outputs in the hinge eval format");
-  cmd->add_option("--json", o->json, "With --candidate, --plugin or --method: also write the report as JSON here "
-                                      "(per category and per case: errors, tolerances, kappa, tier)");
+  cmd->add_option("--json", o->json,
+                  "With --candidate, --plugin or --method: also write the report as JSON here "
+                  "(per category and per case: errors, tolerances, kappa, tier)");
   cmd->add_option("--category", o->categories, "Only these categories (repeatable)");
   cmd->add_flag("--verbose", o->verbose, "Also print every case's errors and tolerances");
   cmd->add_option("--tolerance-base", o->policy.base, "Tolerance policy: units of 2^-53 granted to every case")
@@ -271,7 +275,8 @@ Action add_conform(CLI::App& app) {
     const int modes = int(o->inputs) + int(!o->candidate.empty()) + int(!o->plugin.empty()) + int(!o->method.empty()) +
                       int(!o->write_vectors.empty()) + int(!o->mesh.empty());
     if (modes != 1) {
-      std::cerr << "hinge conform: give exactly one of --inputs, --candidate, --plugin, --method, --mesh, --write-vectors\n";
+      std::cerr
+          << "hinge conform: give exactly one of --inputs, --candidate, --plugin, --method, --mesh, --write-vectors\n";
       return exit_usage;
     }
     if (!o->save.empty() && o->plugin.empty() && o->method.empty()) {

@@ -10,11 +10,14 @@
 namespace hinge::tools {
 
 Action add_demo(CLI::App& app) {
-  auto* cmd = app.add_subcommand("demo", "The main job on built-in defaults: the quick study and the fast kernel's conformance");
+  auto* cmd = app.add_subcommand(
+      "demo", "The main job on built-in defaults: the quick study and the fast kernel's conformance");
   auto out = std::make_shared<std::string>("study");
-  cmd->add_option("--out", *out, "Where the quick study writes study.json, study.md and its plots")->capture_default_str();
-  cmd->footer("Runs `hinge study --quick --out DIR`, then `hinge conform --method fast`. Exit: 0 when both succeed\n"
-              "(the fast kernel within the conformance policy), 1 otherwise.");
+  cmd->add_option("--out", *out, "Where the quick study writes study.json, study.md and its plots")
+      ->capture_default_str();
+  cmd->footer(
+      "Runs `hinge study --quick --out DIR`, then `hinge conform --method fast`. Exit: 0 when both succeed\n"
+      "(the fast kernel within the conformance policy), 1 otherwise.");
   return [out]() -> int {
     study::Options options;
     options.quick = true;

@@ -15,9 +15,10 @@ Action add_eval(CLI::App& app) {
     bool cond = false, faithful = false;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("--method", o->method, "Evaluation method: reference, fast, autodiff, symbolic")->capture_default_str();
-  cmd->add_option("--scalar", o->scalar,
-                  "Scalar type: float, double, long-double, dd, qd, float128, bin128, mpfr:BITS")->capture_default_str();
+  cmd->add_option("--method", o->method, "Evaluation method: reference, fast, autodiff, symbolic")
+      ->capture_default_str();
+  cmd->add_option("--scalar", o->scalar, "Scalar type: float, double, long-double, dd, qd, float128, bin128, mpfr:BITS")
+      ->capture_default_str();
   cmd->add_flag("--cond", o->cond,
                 "Add to each result \"kappa\": {\"theta\", \"grad\", \"hess\"}, the condition numbers of the tolerance "
                 "policy, L ||J_f||_F / ||f||_2 (docs/conformance.md), from the certified values");
@@ -34,14 +35,17 @@ Action add_eval(CLI::App& app) {
   return [o, cmd]() -> int {
     const ScalarType scalar = parse_scalar_type(o->scalar);  // std::invalid_argument: usage error
     const bool method_given = cmd->count("--method") > 0;
-    const methods::Method method = o->faithful && !method_given ? methods::Method::fast : methods::parse_method(o->method);
+    const methods::Method method =
+        o->faithful && !method_given ? methods::Method::fast : methods::parse_method(o->method);
     if (o->faithful && (method != methods::Method::fast || scalar.kind != ScalarType::Kind::kind_double))
       throw std::invalid_argument("--faithful needs --method fast and --scalar double");
-    return run_hinge_stream(o->input, o->output, "eval", [&](const std::string& id_json, const std::array<double, 12>& x) {
-      const RoundedTheta r = o->faithful ? fast::faithful_derivatives_rounded(x) : methods::evaluate_hinge(method, scalar, x);
-      if (!o->cond) return io::result_line(id_json, r);
-      return io::result_line(id_json, r, oracle::certified_with_conditioning(x).conditioning.kappa);
-    });
+    return run_hinge_stream(
+        o->input, o->output, "eval", [&](const std::string& id_json, const std::array<double, 12>& x) {
+          const RoundedTheta r =
+              o->faithful ? fast::faithful_derivatives_rounded(x) : methods::evaluate_hinge(method, scalar, x);
+          if (!o->cond) return io::result_line(id_json, r);
+          return io::result_line(id_json, r, oracle::certified_with_conditioning(x).conditioning.kappa);
+        });
   };
 }
 

@@ -15,11 +15,13 @@ Action add_hessian(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   add_mesh_options(cmd, o->mesh, true);
-  cmd->add_option("--method", o->method, "Evaluation method: reference, fast, autodiff, symbolic")->capture_default_str();
+  cmd->add_option("--method", o->method, "Evaluation method: reference, fast, autodiff, symbolic")
+      ->capture_default_str();
   cmd->add_option("--scalar", o->scalar, "Scalar type: float, double, long-double, dd, qd, float128, bin128, mpfr:BITS")
       ->capture_default_str();
-  cmd->footer("Prints 'energy <value>'. Exit: 0 done; 1 invalid input (message names file and line, edge or face;\n"
-              "no output file left behind); 2 usage error.");
+  cmd->footer(
+      "Prints 'energy <value>'. Exit: 0 done; 1 invalid input (message names file and line, edge or face;\n"
+      "no output file left behind); 2 usage error.");
   return [o]() {
     const ScalarType scalar = parse_scalar_type(o->scalar);  // std::invalid_argument: usage error
     const methods::Method method = methods::parse_method(o->method);

@@ -7,10 +7,10 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "hinge/conformance/certified_line.hpp"
 #include "hinge/io/jsonl.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
-#include "hinge/conformance/certified_line.hpp"
 #include "hinge_stream.hpp"
 #include "mesh_job.hpp"
 #include "progress.hpp"
@@ -81,12 +81,13 @@ Action add_oracle(CLI::App& app) {
   auto o = std::make_shared<OracleOptions>();
   cmd->add_option("--input", o->input, "Input JSON Lines file (default: standard input)");
   cmd->add_option("--output", o->output, "Output JSON Lines file (default: standard output)");
-  cmd->add_flag("--report-precision", o->report_precision,
-                "Add to each line \"path\" (\"fast\": the double-double fast path decided every output; \"exact\": "
-                "the exact stage the rest; \"interval\": enclosures were needed), \"bits\" (working precision the "
-                "enclosures needed, 0 if none), \"exact_bits\" (size of the largest exact integer, 0 if the exact stage "
-                "did not run), \"ties\" (outputs exactly halfway between two doubles) and \"decided_exactly\" "
-                "(outputs whose enclosure straddled a midpoint, rounded by an exact integer comparison)");
+  cmd->add_flag(
+      "--report-precision", o->report_precision,
+      "Add to each line \"path\" (\"fast\": the double-double fast path decided every output; \"exact\": "
+      "the exact stage the rest; \"interval\": enclosures were needed), \"bits\" (working precision the "
+      "enclosures needed, 0 if none), \"exact_bits\" (size of the largest exact integer, 0 if the exact stage "
+      "did not run), \"ties\" (outputs exactly halfway between two doubles) and \"decided_exactly\" "
+      "(outputs whose enclosure straddled a midpoint, rounded by an exact integer comparison)");
   cmd->add_option("--start-bits", o->start_bits, "First working precision of the certification (bits)")
       ->capture_default_str()
       ->check(CLI::Range(53u, 1u << 20));

@@ -8,9 +8,9 @@
 #include "hinge/core/build_info.hpp"
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/obj.hpp"
+#include "hinge/io/summary.hpp"
 #include "hinge/sim/scene.hpp"
 #include "hinge/sim/simulation.hpp"
-#include "hinge/io/summary.hpp"
 #include "mesh_job.hpp"
 #include "progress.hpp"
 
@@ -48,15 +48,17 @@ Action add_simulate(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress on standard error");
   cmd->add_flag("--overwrite", o->overwrite, "Replace the outputs of an earlier run in --out");
-  cmd->footer("Exit: 0 done; 1 invalid scene (the message names the file and the key) or a run that could not go\n"
-              "on (summary.json says why; the frames so far stay); 2 usage error (also: --out holds earlier\n"
-              "outputs and --overwrite is not given).");
+  cmd->footer(
+      "Exit: 0 done; 1 invalid scene (the message names the file and the key) or a run that could not go\n"
+      "on (summary.json says why; the frames so far stay); 2 usage error (also: --out holds earlier\n"
+      "outputs and --overwrite is not given).");
   return [o]() {
     const fs::path out(o->out);
     const fs::path final_obj = out / "final.obj", summary_file = out / "summary.json", frames = out / "frames";
     const bool earlier = fs::exists(final_obj) || fs::exists(summary_file) || fs::exists(frames);
     if (earlier && !o->overwrite) {
-      std::cerr << "hinge simulate: " << o->out << " holds the outputs of an earlier run (give --overwrite to replace them)\n";
+      std::cerr << "hinge simulate: " << o->out
+                << " holds the outputs of an earlier run (give --overwrite to replace them)\n";
       return exit_usage;
     }
     return run_mesh_command("simulate", [&] {
@@ -71,7 +73,8 @@ Action add_simulate(CLI::App& app) {
                         static_cast<std::size_t>(dynamic ? scene.solve.steps : scene.solve.max_newton));
       sim::RunOptions run;
       run.threads = o->threads;
-      if (!o->quiet) run.on_progress = [&](long long done, long long) { progress.update(static_cast<std::size_t>(done)); };
+      if (!o->quiet)
+        run.on_progress = [&](long long done, long long) { progress.update(static_cast<std::size_t>(done)); };
       run.on_frame = [&](int index, const Mesh& state) {
         if (index == 0) fs::create_directories(frames);
         char name[32];

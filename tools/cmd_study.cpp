@@ -11,9 +11,9 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/study_json.hpp"
-#include "hinge/core/errors.hpp"
 #include "hinge/study/study.hpp"
 #include "progress.hpp"
 
@@ -34,7 +34,8 @@ std::optional<std::filesystem::path> plot_script() {
   std::error_code error;
   const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
   if (error) return std::nullopt;
-  for (const auto& candidate : {exe.parent_path() / "plot_study.py", exe.parent_path() / ".." / "share" / "hinge" / "plot_study.py"})
+  for (const auto& candidate :
+       {exe.parent_path() / "plot_study.py", exe.parent_path() / ".." / "share" / "hinge" / "plot_study.py"})
     if (std::filesystem::exists(candidate)) return candidate;
   return std::nullopt;
 }
@@ -54,8 +55,8 @@ void render_plots(const std::filesystem::path& dir) {
     std::cerr << "hinge study: plots not written: plot_study.py is not installed beside the program\n";
     return;
   }
-  const std::string command = std::string(python) + " " + quoted(script->string()) + " " + quoted((dir / "study.json").string()) +
-                              " " + quoted(dir.string());
+  const std::string command = std::string(python) + " " + quoted(script->string()) + " " +
+                              quoted((dir / "study.json").string()) + " " + quoted(dir.string());
   if (std::system(command.c_str()) != 0)
     std::cerr << "hinge study: plots not written (" << command << " failed; it needs python3-matplotlib)\n";
 }
@@ -101,7 +102,8 @@ int run_study(const study::Options& given, const std::string& out, bool plots) {
 }
 
 Action add_study(CLI::App& app) {
-  auto* cmd = app.add_subcommand("study", "What accuracy costs in time: every method in every scalar type, against the certified oracle");
+  auto* cmd = app.add_subcommand(
+      "study", "What accuracy costs in time: every method in every scalar type, against the certified oracle");
   struct Options {
     bool quick = false, no_mesh = false, no_plots = false;
     std::string out = "study", input, methods, scalars;
@@ -112,11 +114,13 @@ Action add_study(CLI::App& app) {
   cmd->add_flag("--quick", o->quick, "The quick study (about a minute): fewer sizes, shorter budgets");
   cmd->add_option("--out", o->out, "Output folder: study.json, study.md, pareto/histogram/scaling .svg and .png")
       ->capture_default_str();
-  cmd->add_option("--input", o->input, "Study these hinges (hinge eval's input format; a line's \"category\" groups it)");
+  cmd->add_option("--input", o->input,
+                  "Study these hinges (hinge eval's input format; a line's \"category\" groups it)");
   cmd->add_option("--sample", o->sample, "Study N of the input hinges, drawn reproducibly")->check(CLI::PositiveNumber);
   cmd->add_option("--methods", o->methods, "Comma-separated methods (default: reference,fast,autodiff,symbolic)");
-  cmd->add_option("--scalars", o->scalars,
-                  "Comma-separated scalar types (default: float,double,long-double,dd,qd,float128,bin128,mpfr:128,mpfr:256)");
+  cmd->add_option(
+      "--scalars", o->scalars,
+      "Comma-separated scalar types (default: float,double,long-double,dd,qd,float128,bin128,mpfr:128,mpfr:256)");
   cmd->add_option("--budget", o->budget, "Seconds per row and per mesh row (default: 1.5 quick, 20 full)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-mesh", o->no_mesh, "Skip the mesh level");
@@ -127,7 +131,8 @@ Action add_study(CLI::App& app) {
     options.quick = o->quick;
     options.mesh = !o->no_mesh;
     options.budget_seconds = o->budget;
-    for (const auto& m : split(o->methods)) options.methods.push_back(methods::parse_method(m));  // invalid_argument: usage
+    for (const auto& m : split(o->methods))
+      options.methods.push_back(methods::parse_method(m));  // invalid_argument: usage
     for (const auto& s : split(o->scalars)) options.scalars.push_back(parse_scalar_type(s));
     if (!o->input.empty()) {
       try {

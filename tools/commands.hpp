@@ -16,13 +16,13 @@ namespace hinge::tools {
 // A subcommand registers its options on `app` and returns the action to run after parsing.
 using Action = std::function<int()>;
 
-Action add_eval(CLI::App& app);     // hinge eval
-Action add_oracle(CLI::App& app);   // hinge oracle (hinges, or --mesh)
-Action add_hessian(CLI::App& app);  // hinge hessian
-Action add_demo(CLI::App& app);     // hinge demo: the main job on built-in defaults
-Action add_conform(CLI::App& app);  // hinge conform: check another implementation
-Action add_study(CLI::App& app);    // hinge study: what accuracy costs in time
-Action add_simulate(CLI::App& app); // hinge simulate: run a scene
+Action add_eval(CLI::App& app);      // hinge eval
+Action add_oracle(CLI::App& app);    // hinge oracle (hinges, or --mesh)
+Action add_hessian(CLI::App& app);   // hinge hessian
+Action add_demo(CLI::App& app);      // hinge demo: the main job on built-in defaults
+Action add_conform(CLI::App& app);   // hinge conform: check another implementation
+Action add_study(CLI::App& app);     // hinge study: what accuracy costs in time
+Action add_simulate(CLI::App& app);  // hinge simulate: run a scene
 
 constexpr int exit_done = 0, exit_invalid_input = 1, exit_usage = 2;
 

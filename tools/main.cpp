@@ -8,8 +8,8 @@
 int main(int argc, char** argv) {
   using namespace hinge::tools;
   CLI::App app{"hinge: discrete bending forces and their Jacobians (Tamstorf & Grinspun 2013)", "hinge"};
-  app.set_version_flag("--version", std::string("hinge ") + HINGE_VERSION + " (contract version " +
-                                        HINGE_CONTRACT_VERSION + ")");
+  app.set_version_flag("--version",
+                       std::string("hinge ") + HINGE_VERSION + " (contract version " + HINGE_CONTRACT_VERSION + ")");
   app.require_subcommand(1);
   const std::vector<std::pair<CLI::App*, Action>> commands = [&] {
     std::vector<std::pair<CLI::App*, Action>> c;

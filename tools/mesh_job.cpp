@@ -47,8 +47,7 @@ MeshJob load_mesh_job(const MeshOptions& o) {
   MeshJob job;
   job.parameters = problem(o).parameters();
   job.threads = resolve_threads(o.threads, "--threads");
-  job.request = want_energy | (o.gradient.empty() ? 0u : want_gradient) |
-                (o.out.empty() ? 0u : want_hessian);
+  job.request = want_energy | (o.gradient.empty() ? 0u : want_gradient) | (o.out.empty() ? 0u : want_hessian);
   job.deformed = io::read_obj(o.mesh);
   if (!o.rest.empty()) job.rest = io::read_obj(o.rest);
   job.topology = build_topology(job.deformed);

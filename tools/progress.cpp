@@ -17,7 +17,9 @@ void Progress::update(std::size_t done) {
   last_ = now;
   shown_ = true;
   const double seconds = std::chrono::duration<double>(now - start_).count();
-  if (total_) std::fprintf(stderr, "\r%s: %zu of %zu (%.0f%%), %.0f s", what_.c_str(), done, total_, 100.0 * static_cast<double>(done) / static_cast<double>(total_), seconds);
+  if (total_)
+    std::fprintf(stderr, "\r%s: %zu of %zu (%.0f%%), %.0f s", what_.c_str(), done, total_,
+                 100.0 * static_cast<double>(done) / static_cast<double>(total_), seconds);
   else std::fprintf(stderr, "\r%s: %zu, %.0f s", what_.c_str(), done, seconds);
   std::fflush(stderr);
 }

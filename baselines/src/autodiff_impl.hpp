@@ -42,7 +42,9 @@ struct NotANumber {};
 template <class T>
 T theta_of(const std::array<T, 12>& p) {
   using V = std::array<T, 3>;
-  auto sub = [&](int i, int j) { return V{p[3 * i] - p[3 * j], p[3 * i + 1] - p[3 * j + 1], p[3 * i + 2] - p[3 * j + 2]}; };
+  auto sub = [&](int i, int j) {
+    return V{p[3 * i] - p[3 * j], p[3 * i + 1] - p[3 * j + 1], p[3 * i + 2] - p[3 * j + 2]};
+  };
   auto cross = [](const V& a, const V& b) {
     return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
   };
@@ -107,5 +109,6 @@ Derivatives<Scalar> autodiff_derivatives(const std::array<double, 12>& x, Output
 
 }  // namespace hinge::baselines
 
-#define HINGE_AUTODIFF_INSTANTIATE(S) \
-  template hinge::baselines::Derivatives<S> hinge::baselines::autodiff_derivatives<S>(const std::array<double, 12>&, Outputs);
+#define HINGE_AUTODIFF_INSTANTIATE(S)                                                                                \
+  template hinge::baselines::Derivatives<S> hinge::baselines::autodiff_derivatives<S>(const std::array<double, 12>&, \
+                                                                                      Outputs);

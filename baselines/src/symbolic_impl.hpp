@@ -44,5 +44,6 @@ Derivatives<Scalar> symbolic_derivatives(const std::array<double, 12>& x, Output
 
 }  // namespace hinge::baselines
 
-#define HINGE_SYMBOLIC_INSTANTIATE(S) \
-  template hinge::baselines::Derivatives<S> hinge::baselines::symbolic_derivatives<S>(const std::array<double, 12>&, Outputs);
+#define HINGE_SYMBOLIC_INSTANTIATE(S)                                                                                \
+  template hinge::baselines::Derivatives<S> hinge::baselines::symbolic_derivatives<S>(const std::array<double, 12>&, \
+                                                                                      Outputs);

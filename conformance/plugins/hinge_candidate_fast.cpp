@@ -7,7 +7,6 @@
 
 extern "C" int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
   // Straight into the caller's arrays (hinge::fast::hinge_derivatives_into): no intermediate matrix.
-  return hinge::plugins::call_candidate_into(x, [&](const std::array<double, 12>& in) {
-    hinge::fast::hinge_derivatives_into(in, *theta, grad, hess);
-  });
+  return hinge::plugins::call_candidate_into(
+      x, [&](const std::array<double, 12>& in) { hinge::fast::hinge_derivatives_into(in, *theta, grad, hess); });
 }

@@ -6,6 +6,7 @@
 
 extern "C" int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
   return hinge::plugins::call_candidate(
-      x, theta, grad, hess, [](const std::array<double, 12>& in) { return hinge::reference::theta_derivatives<double>(in, true); },
+      x, theta, grad, hess,
+      [](const std::array<double, 12>& in) { return hinge::reference::theta_derivatives<double>(in, true); },
       [](const auto& d) { return d.angle.theta; });
 }

@@ -15,12 +15,12 @@ std::string certified_line(const std::string& id_json, const oracle::CertifiedTh
   std::string line = io::result_line(id_json, r);
   line.pop_back();  // '}'
   if (report_precision)
-    line += std::string(", \"path\": \"") + oracle::path_name(c.path) + "\", \"bits\": " + std::to_string(c.bits) + ", \"exact_bits\": " + std::to_string(c.exact_bits) +
-            ", \"ties\": " + std::to_string(c.ties) + ", \"decided_exactly\": " + std::to_string(c.decided_exactly);
+    line += std::string(", \"path\": \"") + oracle::path_name(c.path) + "\", \"bits\": " + std::to_string(c.bits) +
+            ", \"exact_bits\": " + std::to_string(c.exact_bits) + ", \"ties\": " + std::to_string(c.ties) +
+            ", \"decided_exactly\": " + std::to_string(c.decided_exactly);
   if (!c.uncertified.empty()) {
     nlohmann::json flags = nlohmann::json::array();
-    for (const auto& u : c.uncertified)
-      flags.push_back({{"output", u.output}, {"enclosure", {u.lower, u.upper}}});
+    for (const auto& u : c.uncertified) flags.push_back({{"output", u.output}, {"enclosure", {u.lower, u.upper}}});
     line += ", \"uncertified\": " + flags.dump();
   }
   line += '}';

@@ -14,8 +14,12 @@ constexpr double u = 0x1p-53;
 constexpr double infinity = std::numeric_limits<double>::infinity();
 using oracle::scaled_norm;
 
-const double* group_data(const CertifiedTheta& v, int g) { return g == 0 ? &v.theta : g == 1 ? v.grad.data() : v.hess.data(); }
-const double* group_data(const CandidateResult& v, int g) { return g == 0 ? &v.theta : g == 1 ? v.grad.data() : v.hess.data(); }
+const double* group_data(const CertifiedTheta& v, int g) {
+  return g == 0 ? &v.theta : g == 1 ? v.grad.data() : v.hess.data();
+}
+const double* group_data(const CandidateResult& v, int g) {
+  return g == 0 ? &v.theta : g == 1 ? v.grad.data() : v.hess.data();
+}
 constexpr std::size_t group_size[3] = {1, 12, 144};
 
 // The largest magnitude, NaN when a value is NaN.
@@ -45,7 +49,8 @@ double normwise_error(const double* candidate, const double* certified, std::siz
 }
 
 double symmetric_frobenius(const Eigen::SparseMatrix<double>& upper) {
-  const double largest = largest_magnitude(std::span<const double>(upper.valuePtr(), static_cast<std::size_t>(upper.nonZeros())));
+  const double largest =
+      largest_magnitude(std::span<const double>(upper.valuePtr(), static_cast<std::size_t>(upper.nonZeros())));
   if (largest == 0 || !std::isfinite(largest)) return largest;
   double sum = 0;
   for (Eigen::Index c = 0; c < upper.outerSize(); ++c)
@@ -111,7 +116,8 @@ CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& p
     int largest = 0;
     for (std::size_t i = 0; i < group_size[g]; ++i) {
       difference[i] = got[i] - want[i];
-      if (std::fabs(difference[i]) > std::fabs(difference[largest]) || std::isnan(difference[i])) largest = static_cast<int>(i);
+      if (std::fabs(difference[i]) > std::fabs(difference[largest]) || std::isnan(difference[i]))
+        largest = static_cast<int>(i);
     }
     o.error[g] = normwise_error(got, want, group_size[g], e.conditioning.scale[g]);
     const double ratio = o.error[g] / o.tolerance[g];
@@ -128,8 +134,8 @@ CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& p
   for (int g = 0; g < 3; ++g)
     for (std::size_t i = 0; i < group_size[g]; ++i) equal = equal && group_data(r, g)[i] == group_data(e.values, g)[i];
   const double worst = std::max({o.error[0], o.error[1], o.error[2]});
-  o.tier = !o.pass ? Tier::fail
-           : equal ? Tier::correctly_rounded
+  o.tier = !o.pass      ? Tier::fail
+           : equal      ? Tier::correctly_rounded
            : worst <= 1 ? Tier::faithful
            : worst <= 4 ? Tier::four_units
                         : Tier::policy;

@@ -271,7 +271,8 @@ void offsets(Builder& b) {
   auto shifted = [&](double magnitude) {
     const Local l = random_well_shaped(r);
     const P3 d = direction();
-    return place(l.points(), {0.5, 0, 0}, random_rotation(r), 1, {magnitude * d[0], magnitude * d[1], magnitude * d[2]});
+    return place(l.points(), {0.5, 0, 0}, random_rotation(r), 1,
+                 {magnitude * d[0], magnitude * d[1], magnitude * d[2]});
   };
   for (int k = 1; k <= 14; ++k) b.add("1e" + std::to_string(k), shifted(power_of_ten(k)));
   for (int k : {3, 10, 20, 30, 40}) {  // all three coordinates offset by the same power of two
@@ -400,7 +401,8 @@ X12 random_needle(Random& r, std::string& tag) {
   Local l = random_well_shaped(r);
   const int k = r.integer(2, 15);
   const double small = power_of_ten(-k) * r.uniform(1, 2);
-  static const std::array<const char*, 6> kinds{"cap-upper", "cap-lower", "cap-both", "spike-upper", "spike-lower", "cap-spike"};
+  static const std::array<const char*, 6> kinds{"cap-upper",   "cap-lower",   "cap-both",
+                                                "spike-upper", "spike-lower", "cap-spike"};
   const std::string kind = kinds[static_cast<std::size_t>(r.integer(0, 5))];
   if (kind == "cap-upper" || kind == "cap-both" || kind == "cap-spike") l.h0 = small;
   if (kind == "cap-lower" || kind == "cap-both") l.h3 = small;
@@ -414,7 +416,7 @@ X12 random_needle(Random& r, std::string& tag) {
 
 const std::vector<std::string>& hard_families() {
   static const std::vector<std::string> names{"needles", "short-hinge-edges", "near-flat", "near-folded",
-                                              "folded", "offsets", "scales", "combined"};
+                                              "folded",  "offsets",           "scales",    "combined"};
   return names;
 }
 
@@ -479,15 +481,16 @@ std::vector<Case> hard_cases(std::uint64_t seed, int per_family) {
     const int k = r.integer(-300, 300);
     for (int v = 0; v < 4; ++v)
       for (int c = 0; c < 3; ++c) x[3 * v + c] = std::ldexp(x[3 * v + c] + o * d[c], k);
-    add_if_valid(out, "combined", tag + "-offset-1e" + std::to_string(static_cast<int>(std::log10(o))) + "-2^" +
-                                      std::to_string(k), x);
+    add_if_valid(out, "combined",
+                 tag + "-offset-1e" + std::to_string(static_cast<int>(std::log10(o))) + "-2^" + std::to_string(k), x);
   }
   return out;
 }
 
 const std::vector<std::string>& categories() {
-  static const std::vector<std::string> names{"well-shaped", "rotations", "scales", "offsets", "near-flat",
-                                              "near-folded", "needles", "short-hinge-edges", "boundary-meshes"};
+  static const std::vector<std::string> names{"well-shaped", "rotations",         "scales",
+                                              "offsets",     "near-flat",         "near-folded",
+                                              "needles",     "short-hinge-edges", "boundary-meshes"};
   return names;
 }
 

@@ -90,7 +90,8 @@ bool write_all(int fd, const void* buffer, std::size_t n) {
     Answer answer;
     for (double& v : answer.out) v = std::numeric_limits<double>::quiet_NaN();  // unwritten: non-finite
     answer.status = function(x, &answer.out[0], &answer.out[1], &answer.out[13]);
-    if (!write_all(fd, &answer.status, sizeof answer.status) || !write_all(fd, answer.out, sizeof answer.out)) ::_exit(0);
+    if (!write_all(fd, &answer.status, sizeof answer.status) || !write_all(fd, answer.out, sizeof answer.out))
+      ::_exit(0);
   }
 }
 
@@ -163,7 +164,8 @@ void Plugin::start() {
   }
   if (read_all(socket_, &length, sizeof length, Clock::time_point::max()) != 1) length = 0;
   std::string why(length, '\0');
-  if (length > 0 && read_all(socket_, why.data(), length, Clock::time_point::max()) != 1) why = "cannot load plugin " + path_;
+  if (length > 0 && read_all(socket_, why.data(), length, Clock::time_point::max()) != 1)
+    why = "cannot load plugin " + path_;
   if (status != 0) {
     stop();
     throw PluginError(why);
@@ -175,7 +177,8 @@ CandidateResult Plugin::operator()(const std::array<double, 12>& x) {
   r.status = CandidateResult::Status::error;
   if (child_ < 0) start();  // after a crash or a time-out
   Answer answer;
-  const auto deadline = std::chrono::time_point_cast<Clock::duration>(Clock::now() + std::chrono::duration<double>(timeout_));
+  const auto deadline =
+      std::chrono::time_point_cast<Clock::duration>(Clock::now() + std::chrono::duration<double>(timeout_));
   int got = write_all(socket_, x.data(), sizeof(double) * 12) ? 1 : 0;
   if (got == 1) got = read_all(socket_, &answer.status, sizeof answer.status, deadline);
   if (got == 1) got = read_all(socket_, answer.out, sizeof answer.out, deadline);

@@ -89,24 +89,26 @@ bool print_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, c
     auto pair = [](double a, double b) { return fixed(a) + " / " + fixed(b); };
     std::snprintf(line, sizeof line, "%-18s %5d %7d %9d  %-19s %-19s %-19s %-6s %-17s %s (%s)\n", s.category.c_str(),
                   s.cases, s.missing, s.nonfinite, pair(s.median[0], s.worst[0]).c_str(),
-                  pair(s.median[1], s.worst[1]).c_str(), pair(s.median[2], s.worst[2]).c_str(), s.pass ? "pass" : "FAIL",
-                  tier_name(s.tier), s.worst_id.c_str(), fixed(s.worst_ratio, 2).c_str());
+                  pair(s.median[1], s.worst[1]).c_str(), pair(s.median[2], s.worst[2]).c_str(),
+                  s.pass ? "pass" : "FAIL", tier_name(s.tier), s.worst_id.c_str(), fixed(s.worst_ratio, 2).c_str());
     out << line;
     all = all && s.pass;
   }
   out << '\n';
   for (const CategorySummary& s : summary) {
     if (s.pass) continue;
-    const auto it = std::find_if(outcomes.begin(), outcomes.end(), [&](const CaseOutcome& o) { return o.id == s.worst_id; });
+    const auto it =
+        std::find_if(outcomes.begin(), outcomes.end(), [&](const CaseOutcome& o) { return o.id == s.worst_id; });
     const CaseOutcome& o = *it;
     out << "FAIL " << s.category << ": " << s.failed << " of " << s.cases << " cases; worst case " << o.id << ": ";
     if (o.status != CandidateResult::Status::ok) {
       out << status_name(o.status) << '\n';
       continue;
     }
-    out << group_names[o.group] << " error " << fixed(o.error[o.group]) << " > tolerance " << fixed(o.tolerance[o.group])
-        << " (kappa " << fixed(o.kappa[o.group], 2) << "); largest difference at " << entry_name(o.group, o.entry)
-        << ": expected " << exact(o.expected_value) << ", got " << exact(o.candidate_value) << '\n';
+    out << group_names[o.group] << " error " << fixed(o.error[o.group]) << " > tolerance "
+        << fixed(o.tolerance[o.group]) << " (kappa " << fixed(o.kappa[o.group], 2) << "); largest difference at "
+        << entry_name(o.group, o.entry) << ": expected " << exact(o.expected_value) << ", got "
+        << exact(o.candidate_value) << '\n';
   }
   out << "tiers (docs/conformance.md): correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), policy, fail: the\n"
          "tier each category's every case reaches\n";
@@ -131,17 +133,29 @@ void write_json_report(std::ostream& out, const std::vector<CaseOutcome>& outcom
   report["categories"] = nlohmann::json::array();
   for (const CategorySummary& s : summary) {
     all = all && s.pass;
-    report["categories"].push_back({{"category", s.category}, {"cases", s.cases}, {"missing", s.missing},
-                                    {"nonfinite", s.nonfinite}, {"failed", s.failed}, {"median", groups(s.median)},
-                                    {"worst", groups(s.worst)}, {"worst_case", s.worst_id},
-                                    {"worst_ratio", number(s.worst_ratio)}, {"pass", s.pass}, {"tier", tier_name(s.tier)}});
+    report["categories"].push_back({{"category", s.category},
+                                    {"cases", s.cases},
+                                    {"missing", s.missing},
+                                    {"nonfinite", s.nonfinite},
+                                    {"failed", s.failed},
+                                    {"median", groups(s.median)},
+                                    {"worst", groups(s.worst)},
+                                    {"worst_case", s.worst_id},
+                                    {"worst_ratio", number(s.worst_ratio)},
+                                    {"pass", s.pass},
+                                    {"tier", tier_name(s.tier)}});
   }
   report["pass"] = all;
   report["cases"] = nlohmann::json::array();
   for (const CaseOutcome& o : outcomes)
-    report["cases"].push_back({{"id", o.id}, {"category", o.category}, {"status", status_name(o.status)},
-                               {"error", groups(o.error)}, {"tolerance", groups(o.tolerance)}, {"kappa", groups(o.kappa)},
-                               {"pass", o.pass}, {"tier", tier_name(o.tier)}});
+    report["cases"].push_back({{"id", o.id},
+                               {"category", o.category},
+                               {"status", status_name(o.status)},
+                               {"error", groups(o.error)},
+                               {"tolerance", groups(o.tolerance)},
+                               {"kappa", groups(o.kappa)},
+                               {"pass", o.pass},
+                               {"tier", tier_name(o.tier)}});
   out << report.dump(1) << '\n';
 }
 

@@ -1,13 +1,13 @@
 // The committed conformance vectors, written (hinge/conformance/vectors.hpp, docs/conformance-format.md).
 #include <stdexcept>
 
+#include "hinge/conformance/grading.hpp"
+#include "hinge/conformance/vectors.hpp"
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/jsonl.hpp"
 #include "hinge/io/matrix_market.hpp"
 #include "hinge/io/number.hpp"
 #include "hinge/io/obj.hpp"
-#include "hinge/conformance/grading.hpp"
-#include "hinge/conformance/vectors.hpp"
 
 namespace hinge::conformance {
 namespace {
@@ -72,18 +72,20 @@ void write_vectors(const std::filesystem::path& dir, const std::function<void(st
       if (!c.uncertified.empty()) throw std::logic_error("conformance mesh " + m.name + " is not certified");
       const std::string stem = m.name + "." + energy;
       io::AtomicFile h((dir / "meshes" / (stem + ".mtx")).string());
-      io::write_matrix_market(h.stream(), c.rounded.hessian,
-                              "hinge: certified Hessian of the bending energy; lower triangle, 1-based, global index 3 v + c");
+      io::write_matrix_market(
+          h.stream(), c.rounded.hessian,
+          "hinge: certified Hessian of the bending energy; lower triangle, 1-based, global index 3 v + c");
       h.commit();
       io::AtomicFile g((dir / "meshes" / (stem + ".gradient.txt")).string());
       io::write_numbers(g.stream(), c.rounded.gradient);
       g.commit();
-      std::string line = "{\"mesh\": " + io::json_string(m.name + ".obj") + ", \"rest\": " + io::json_string(m.name + "-rest.obj") +
-                         ", \"energy\": " + io::json_string(energy) + ", \"k\": 1.0, \"hinges\": " +
-                         std::to_string(t.hinges.size()) + ", \"value\": ";
+      std::string line = "{\"mesh\": " + io::json_string(m.name + ".obj") +
+                         ", \"rest\": " + io::json_string(m.name + "-rest.obj") +
+                         ", \"energy\": " + io::json_string(energy) +
+                         ", \"k\": 1.0, \"hinges\": " + std::to_string(t.hinges.size()) + ", \"value\": ";
       io::append_double(line, c.rounded.energy);
-      line += ", \"hessian\": " + io::json_string(stem + ".mtx") + ", \"gradient\": " + io::json_string(stem + ".gradient.txt") +
-              ", \"kappa_sum\": ";
+      line += ", \"hessian\": " + io::json_string(stem + ".mtx") +
+              ", \"gradient\": " + io::json_string(stem + ".gradient.txt") + ", \"kappa_sum\": ";
       io::append_double(line, hessian_kappa_sum(c));
       line += ", \"bits\": " + std::to_string(c.bits) + "}\n";
       index.stream() << line;

@@ -22,7 +22,7 @@ std::string shown(double value) {
 }
 
 constexpr Energy evaluated[] = {Energy::shells, Energy::tan, Energy::willmore, Energy::bridson};
-constexpr Energy graded[] = {Energy::shells, Energy::tan,       Energy::willmore,
+constexpr Energy graded[] = {Energy::shells,  Energy::tan,       Energy::willmore,
                              Energy::bridson, Energy::quadratic, Energy::custom};
 constexpr Energy all[] = {Energy::shells,       Energy::tan,       Energy::willmore, Energy::bridson,
                           Energy::viscoelastic, Energy::quadratic, Energy::custom};
@@ -42,13 +42,13 @@ Energy parse_energy(std::string_view value, std::string_view name, const Energy 
     if (std::find(std::begin(accepted), std::end(accepted), e) != std::end(accepted)) return e;
     switch (e) {
       case Energy::viscoelastic:
-        throw ParameterError(name, "the viscoelastic energy is library-only: it needs a previous state and a time step");
+        throw ParameterError(name,
+                             "the viscoelastic energy is library-only: it needs a previous state and a time step");
       case Energy::quadratic:
         throw ParameterError(name, "the quadratic energy is conformance-only: hinge has no evaluator for it");
       case Energy::custom:
         throw ParameterError(name, "the custom energy is conformance-only: it is a candidate's own energy");
-      default:
-        break;
+      default: break;
     }
   }
   std::string list;
@@ -107,8 +107,9 @@ double stiffness_from_material(Parameter young, Parameter poisson, Parameter thi
   const double Y = check_young(young), nu = check_poisson(poisson), h = check_thickness(thickness);
   const double k = bending_stiffness(Y, nu, h);  // eq. (11)
   if (!std::isfinite(k))
-    throw ParameterError(std::string(young.name) + ", " + std::string(poisson.name) + ", " + std::string(thickness.name),
-                         "k = Y h^3 / (24 (1 - nu^2)) (eq. (11)) overflows double");
+    throw ParameterError(
+        std::string(young.name) + ", " + std::string(poisson.name) + ", " + std::string(thickness.name),
+        "k = Y h^3 / (24 (1 - nu^2)) (eq. (11)) overflows double");
   return k;
 }
 
@@ -124,8 +125,9 @@ BendingProblem bending_problem(Parameter young, Parameter poisson, Parameter thi
 void check_bending_mesh(const Topology& topology, const Mesh& deformed, const Mesh* rest, const MeshCheck& check) {
   const auto prefix = [](std::string_view where) { return where.empty() ? std::string() : std::string(where) + ": "; };
   if (topology.hinges.empty() && !check.allow_no_hinges)
-    throw InputError(prefix(check.deformed) + "the mesh has no interior edge, so its bending energy is 0 whatever its shape" +
-                     (check.allow_option.empty() ? std::string() : " (" + std::string(check.allow_option) + " if that is meant)"));
+    throw InputError(
+        prefix(check.deformed) + "the mesh has no interior edge, so its bending energy is 0 whatever its shape" +
+        (check.allow_option.empty() ? std::string() : " (" + std::string(check.allow_option) + " if that is meant)"));
   const auto faces = [&](const Mesh& mesh, std::string_view where) {
     try {
       check_faces_nondegenerate(mesh);

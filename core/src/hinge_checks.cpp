@@ -40,13 +40,14 @@ void check_hinge(const std::array<double, 12>& x) {
 std::string describe_hinge(const Topology& topology, Index hinge) {
   const Hinge& h = topology.hinges[hinge];
   const auto s = [](auto v) { return std::to_string(v); };
-  return "hinge " + s(hinge) + " (edge " + s(h.x[1]) + "-" + s(h.x[2]) + ", faces " + s(h.upper) + " and " + s(h.lower) +
-         "; OBJ numbering: vertices " + s(h.x[1] + 1) + "-" + s(h.x[2] + 1) + ", faces " + s(h.upper + 1) + " and " +
-         s(h.lower + 1) + "): ";
+  return "hinge " + s(hinge) + " (edge " + s(h.x[1]) + "-" + s(h.x[2]) + ", faces " + s(h.upper) + " and " +
+         s(h.lower) + "; OBJ numbering: vertices " + s(h.x[1] + 1) + "-" + s(h.x[2] + 1) + ", faces " + s(h.upper + 1) +
+         " and " + s(h.lower + 1) + "): ";
 }
 
 void throw_mesh_mismatch(const char* what) {
-  throw InputError(std::string("the ") + what + " mesh must have the same vertices (count) and faces as the deformed mesh");
+  throw InputError(std::string("the ") + what +
+                   " mesh must have the same vertices (count) and faces as the deformed mesh");
 }
 
 void check_same_mesh(const Mesh& mesh, const Topology& topology, const char* what) {

@@ -38,13 +38,13 @@ void check_face_indices(const Mesh& mesh, bool distinct) {
     const auto& v = mesh.faces[f];
     for (int i = 0; i < 3; ++i) {
       if (v[i] < 0 || static_cast<std::size_t>(v[i]) >= n) {
-        throw InputError(face_name(f) + ": vertex index " + std::to_string(v[i]) +
-                         " out of range (the mesh has " + std::to_string(n) + " vertices)");
+        throw InputError(face_name(f) + ": vertex index " + std::to_string(v[i]) + " out of range (the mesh has " +
+                         std::to_string(n) + " vertices)");
       }
     }
     if (distinct && (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])) {
-      throw InputError(face_name(f) + " repeats a vertex: (" + std::to_string(v[0]) + ", " +
-                       std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")");
+      throw InputError(face_name(f) + " repeats a vertex: (" + std::to_string(v[0]) + ", " + std::to_string(v[1]) +
+                       ", " + std::to_string(v[2]) + ")");
     }
   }
 }
@@ -57,8 +57,8 @@ Topology build_topology(const Mesh& mesh) {
   const std::size_t vertex_count = mesh.vertices.size();
   if (face_count > static_cast<std::size_t>(std::numeric_limits<Index>::max() / 3) ||
       vertex_count > static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
-    throw InputError("mesh too large: " + std::to_string(face_count) + " faces, " +
-                     std::to_string(vertex_count) + " vertices (at most 715827882 faces)");
+    throw InputError("mesh too large: " + std::to_string(face_count) + " faces, " + std::to_string(vertex_count) +
+                     " vertices (at most 715827882 faces)");
   }
   const auto& faces = mesh.faces;
   const Index half_count = static_cast<Index>(3 * face_count);
@@ -162,8 +162,8 @@ void check_faces_nondegenerate(const Mesh& mesh) {
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const auto& v = mesh.faces[f];
     if (zero_area_exact(mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]])) {
-      throw InputError(face_name(f) + " (vertices " + std::to_string(v[0]) + ", " + std::to_string(v[1]) +
-                       ", " + std::to_string(v[2]) + ") has zero area (collinear or coincident vertices)");
+      throw InputError(face_name(f) + " (vertices " + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " +
+                       std::to_string(v[2]) + ") has zero area (collinear or coincident vertices)");
     }
   }
 }

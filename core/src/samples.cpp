@@ -5,7 +5,6 @@
 #include <random>
 #include <stdexcept>
 
-
 namespace hinge {
 
 std::vector<std::array<Index, 3>> grid_faces(int nx, int ny) {
@@ -21,7 +20,8 @@ std::vector<std::array<Index, 3>> grid_faces(int nx, int ny) {
 }
 
 Mesh grid_mesh(int nx, int ny, double lx, double ly, const std::array<double, 3>& center, const std::string& plane) {
-  if (nx < 2 || ny < 2 || !(lx > 0) || !(ly > 0)) throw std::invalid_argument("grid: expected nx, ny >= 2 and positive sizes");
+  if (nx < 2 || ny < 2 || !(lx > 0) || !(ly > 0))
+    throw std::invalid_argument("grid: expected nx, ny >= 2 and positive sizes");
   int a = 0, b = 1;
   if (plane == "xz") b = 2;
   else if (plane == "yz") a = 1, b = 2;

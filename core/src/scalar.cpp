@@ -41,8 +41,9 @@ ScalarType parse_scalar_type(std::string_view name) {
   if (name == "qd") return {K::kind_qd, 0};
   if (name == "float128") {
     if (HINGE_HAVE_FLOAT128) return {K::kind_float128, 0};
-    throw std::invalid_argument("scalar type 'float128' is not in this build (GCC's __float128: x86 only, and "
-                                "HINGE_FLOAT128=ON)");
+    throw std::invalid_argument(
+        "scalar type 'float128' is not in this build (GCC's __float128: x86 only, and "
+        "HINGE_FLOAT128=ON)");
   }
   if (name == "bin128") return {K::kind_bin128, 0};
   if (name.starts_with("mpfr:")) {

@@ -3,8 +3,8 @@
 // on eight faces at a time in double-double (face_pass_lanes.hpp); the assembly pass has no x86-64-v4
 // version, which measured slower than x86-64-v3 (docs/performance-log.md).
 #include "dispatch.hpp"
-#include "hinge/fast/isa.hpp"
 #include "face_pass_lanes.hpp"
+#include "hinge/fast/isa.hpp"
 #include "passes.hpp"
 
 namespace hinge::fast::detail {
@@ -37,7 +37,9 @@ void assembly_baseline(const Mesh& mesh, const Pattern& pattern, const std::arra
 template <>
 void Kernels<double>::faces(const Mesh& mesh, const Pattern& pattern, std::size_t begin, std::size_t end,
                             std::array<double, 4>* face, char* suspect) {
-  static const auto kernel = active_isa() == Isa::avx512 ? faces_v4 : active_isa() == Isa::avx2 ? faces_v3 : faces_baseline;
+  static const auto kernel = active_isa() == Isa::avx512 ? faces_v4
+                             : active_isa() == Isa::avx2 ? faces_v3
+                                                         : faces_baseline;
   kernel(mesh, pattern, begin, end, face, suspect);
 }
 

@@ -22,16 +22,16 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <atomic>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "assembly_plan.hpp"
-#include "hinge/fast/assemble.hpp"
 #include "hinge/core/errors.hpp"
 #include "hinge/core/fp_environment.hpp"
 #include "hinge/core/hinge_checks.hpp"
+#include "hinge/fast/assemble.hpp"
 #include "passes.hpp"
 #include "team.hpp"
 
@@ -50,12 +50,14 @@ constexpr int kUnscaled = 16;
 template <class Scalar>
 class Workspace {
  public:
-  Workspace(const Topology& topology, EdgeOrientation orientation) : topology_(&topology), pattern_(topology, orientation) {}
+  Workspace(const Topology& topology, EdgeOrientation orientation)
+      : topology_(&topology), pattern_(topology, orientation) {}
 
   std::vector<HingeCoefficients<Scalar>> rest_state(const Mesh& rest, const EnergyParameters& parameters, int threads);
   void set_previous_state(std::vector<HingeCoefficients<Scalar>>& coefficients, const Mesh& previous, int threads);
   void evaluate(const Mesh& deformed, const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
-                unsigned request, int threads, MeshDerivatives<Scalar>& out, std::vector<HingeCoefficients<Scalar>>* release);
+                unsigned request, int threads, MeshDerivatives<Scalar>& out,
+                std::vector<HingeCoefficients<Scalar>>* release);
 
   const Topology* topology_;
   Pattern pattern_;
@@ -125,7 +127,8 @@ void Workspace<Scalar>::face_pass(const Mesh& mesh, int threads, const char* wha
   std::atomic<bool> mismatch{false};
   for_chunks(team_, count, kFaceChunk, threads, [&](std::size_t begin, std::size_t end, std::size_t) {
     Kernels<Scalar>::faces(mesh, pattern_, begin, end, face_.data(), suspect_face_.data());
-    if (!std::equal(mesh.faces.begin() + static_cast<std::ptrdiff_t>(begin), mesh.faces.begin() + static_cast<std::ptrdiff_t>(end),
+    if (!std::equal(mesh.faces.begin() + static_cast<std::ptrdiff_t>(begin),
+                    mesh.faces.begin() + static_cast<std::ptrdiff_t>(end),
                     topology_->faces.begin() + static_cast<std::ptrdiff_t>(begin)))
       mismatch.store(true, std::memory_order_relaxed);
   });
@@ -154,8 +157,8 @@ bool Workspace<Scalar>::hinge_pass(const Mesh& mesh, int threads, bool skip_susp
         continue;
       }
       try {
-        energy += per_hinge(static_cast<Index>(h), bend_angle<Scalar>(mesh, hg, face_[hg.upper], face_[hg.lower],
-                                                                            want_theta_));
+        energy += per_hinge(static_cast<Index>(h),
+                            bend_angle<Scalar>(mesh, hg, face_[hg.upper], face_[hg.lower], want_theta_));
       } catch (const std::exception&) {
         suspect_hinge_[h] = 1;
         any = true;
@@ -170,7 +173,8 @@ bool Workspace<Scalar>::hinge_pass(const Mesh& mesh, int threads, bool skip_susp
 // The vertex and face counts; the faces themselves are compared by the face pass (in parallel).
 template <class Scalar>
 void Workspace<Scalar>::check_mesh_size(const Mesh& mesh, const char* what) const {
-  if (mesh.vertices.size() != topology_->vertex_count || mesh.faces.size() != topology_->faces.size()) throw_mesh_mismatch(what);
+  if (mesh.vertices.size() != topology_->vertex_count || mesh.faces.size() != topology_->faces.size())
+    throw_mesh_mismatch(what);
 }
 
 // The hinge pass, and when anything was flagged: the exact checks (report, which throws for a real
@@ -200,8 +204,7 @@ void Workspace<Scalar>::report(const Mesh& mesh, Purpose purpose) {
       if (purpose == Purpose::evaluate) psi(last_model_, (*last_coefficients_)[h], b);
       else if (purpose == Purpose::rest && infinite_at_pi(last_model_) && b.on_branch_cut)
         throw_folded_rest(last_model_);
-      else if (purpose == Purpose::previous && b.on_branch_cut)
-        throw_folded_previous();
+      else if (purpose == Purpose::previous && b.on_branch_cut) throw_folded_previous();
     });
   }
 }
@@ -263,8 +266,8 @@ void Workspace<Scalar>::set_previous_state(std::vector<HingeCoefficients<Scalar>
 
 template <class Scalar>
 void Workspace<Scalar>::evaluate(const Mesh& deformed_given, const std::vector<HingeCoefficients<Scalar>>& coefficients,
-                                  Model model, unsigned request, int threads, MeshDerivatives<Scalar>& out,
-                                  std::vector<HingeCoefficients<Scalar>>* release) {
+                                 Model model, unsigned request, int threads, MeshDerivatives<Scalar>& out,
+                                 std::vector<HingeCoefficients<Scalar>>* release) {
   check_fp_environment();  // the exact steps need rounding to nearest and subnormals
   check_isa<Scalar>();
   check_mesh_size(deformed_given, "deformed");
@@ -319,10 +322,11 @@ void Workspace<Scalar>::evaluate(const Mesh& deformed_given, const std::vector<H
   const AssemblyFlags flags{want_gradient, want_hessian};
   team_.run(parts, [&](int t) {
     const AssemblyRange r{plan_.vertex[t], plan_.vertex[t + 1], plan_.face_begin[t], plan_.face_end[t]};
-    if (gradient) std::fill(gradient + 3 * static_cast<std::size_t>(r.lo), gradient + 3 * static_cast<std::size_t>(r.hi), Scalar(0));
+    if (gradient)
+      std::fill(gradient + 3 * static_cast<std::size_t>(r.lo), gradient + 3 * static_cast<std::size_t>(r.hi),
+                Scalar(0));
     if (inner) pattern_.fill_inner(inner, r.lo, r.hi);
-    Kernels<Scalar>::assembly(deformed, pattern_, face_.data(), psi1_.data(), psi2_.data(), r, flags, values,
-                                      gradient);
+    Kernels<Scalar>::assembly(deformed, pattern_, face_.data(), psi1_.data(), psi2_.data(), r, flags, values, gradient);
   });
   if (scale != 0) {  // undone exactly (in two steps: 2^-2 scale alone may be outside double's range)
     using std::ldexp;
@@ -336,15 +340,16 @@ void Workspace<Scalar>::evaluate(const Mesh& deformed_given, const std::vector<H
 // Pattern::matches, the outer index arrays compared by the team.
 template <class Scalar>
 bool Workspace<Scalar>::hessian_matches(const Eigen::SparseMatrix<Scalar>& m, int threads) {
-  if (m.rows() != pattern_.size() || m.cols() != pattern_.size() || !m.isCompressed() || m.nonZeros() != pattern_.nonzeros())
+  if (m.rows() != pattern_.size() || m.cols() != pattern_.size() || !m.isCompressed() ||
+      m.nonZeros() != pattern_.nonzeros())
     return false;
   const SlotIndex* mine = pattern_.outer().data();
   const auto* theirs = m.outerIndexPtr();
   std::atomic<bool> differ{false};
   for_chunks(team_, pattern_.outer().size(), kCompareChunk, threads,
-                     [&](std::size_t begin, std::size_t end, std::size_t) {
-                       if (!std::equal(mine + begin, mine + end, theirs + begin)) differ.store(true, std::memory_order_relaxed);
-                     });
+             [&](std::size_t begin, std::size_t end, std::size_t) {
+               if (!std::equal(mine + begin, mine + end, theirs + begin)) differ.store(true, std::memory_order_relaxed);
+             });
   return !differ.load();
 }
 
@@ -356,7 +361,8 @@ Assembler<Scalar>::Assembler(const Topology& topology, EdgeOrientation orientati
 template <class Scalar>
 Assembler<Scalar>::~Assembler() = default;
 template <class Scalar>
-Assembler<Scalar>::Assembler(const Assembler& other) : work_(std::make_unique<detail::Workspace<Scalar>>(*other.work_)) {}
+Assembler<Scalar>::Assembler(const Assembler& other)
+    : work_(std::make_unique<detail::Workspace<Scalar>>(*other.work_)) {}
 template <class Scalar>
 Assembler<Scalar>& Assembler<Scalar>::operator=(const Assembler& other) {
   if (this != &other) work_ = std::make_unique<detail::Workspace<Scalar>>(*other.work_);
@@ -377,8 +383,8 @@ const Topology& Assembler<Scalar>::topology() const {
 }
 
 template <class Scalar>
-std::vector<HingeCoefficients<Scalar>> Assembler<Scalar>::rest_state(const Mesh& rest, const EnergyParameters& parameters,
-                                                                     int threads) {
+std::vector<HingeCoefficients<Scalar>> Assembler<Scalar>::rest_state(const Mesh& rest,
+                                                                     const EnergyParameters& parameters, int threads) {
   return work_->rest_state(rest, parameters, threads);
 }
 template <class Scalar>

@@ -61,7 +61,9 @@ AssemblyPlan plan_assembly(const Pattern& pattern, int parts) {
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const Pattern::Face& F = faces[f];
     if (F.highest < 0) continue;
-    std::size_t t = static_cast<std::size_t>(std::upper_bound(plan.vertex.begin(), plan.vertex.end(), F.lowest) - plan.vertex.begin()) - 1;
+    std::size_t t = static_cast<std::size_t>(std::upper_bound(plan.vertex.begin(), plan.vertex.end(), F.lowest) -
+                                             plan.vertex.begin()) -
+                    1;
     for (; t < P && plan.vertex[t] <= F.highest; ++t) {
       if (plan.vertex[t] == plan.vertex[t + 1]) continue;
       if (plan.face_begin[t] == none) plan.face_begin[t] = f;

@@ -19,7 +19,6 @@ struct AssemblyPlan {
   std::vector<std::size_t> face_begin, face_end;
 };
 
-
 // The assembly pass's split into `parts` column-vertex ranges (parts >= 1) that balance the estimated
 // work: each face costs every range it writes into kFaceCost plus kOwnedHingeCost per hinge it owns
 // (its geometry, eq. (7) and its owned edges' terms are computed in full by every such range). The ranges
@@ -29,6 +28,5 @@ AssemblyPlan plan_assembly(const Pattern& pattern, int parts);
 // The assembly uses at most 1 + faces / kFacesPerPart threads (a range of about a thousand faces takes
 // some 100 microseconds; starting a region of the team takes microseconds).
 constexpr std::size_t kFacesPerPart = 1024;
-
 
 }  // namespace hinge::fast::detail

@@ -20,12 +20,22 @@ struct Triple {
   Scalar v[3];
   HINGE_FAST_INLINE Scalar& operator[](int i) { return v[i]; }
   HINGE_FAST_INLINE const Scalar& operator[](int i) const { return v[i]; }
-  friend HINGE_FAST_INLINE Triple operator+(const Triple& a, const Triple& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
-  friend HINGE_FAST_INLINE Triple operator-(const Triple& a, const Triple& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+  friend HINGE_FAST_INLINE Triple operator+(const Triple& a, const Triple& b) {
+    return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}};
+  }
+  friend HINGE_FAST_INLINE Triple operator-(const Triple& a, const Triple& b) {
+    return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
+  }
   friend HINGE_FAST_INLINE Triple operator-(const Triple& a) { return {{-a[0], -a[1], -a[2]}}; }
-  friend HINGE_FAST_INLINE Triple operator*(const Triple& a, const Scalar& s) { return {{a[0] * s, a[1] * s, a[2] * s}}; }
-  friend HINGE_FAST_INLINE Triple operator*(const Scalar& s, const Triple& a) { return {{s * a[0], s * a[1], s * a[2]}}; }
-  friend HINGE_FAST_INLINE Triple operator/(const Triple& a, const Scalar& s) { return {{a[0] / s, a[1] / s, a[2] / s}}; }
+  friend HINGE_FAST_INLINE Triple operator*(const Triple& a, const Scalar& s) {
+    return {{a[0] * s, a[1] * s, a[2] * s}};
+  }
+  friend HINGE_FAST_INLINE Triple operator*(const Scalar& s, const Triple& a) {
+    return {{s * a[0], s * a[1], s * a[2]}};
+  }
+  friend HINGE_FAST_INLINE Triple operator/(const Triple& a, const Scalar& s) {
+    return {{a[0] / s, a[1] / s, a[2] / s}};
+  }
   HINGE_FAST_INLINE Triple& operator+=(const Triple& b) {
     v[0] += b[0];
     v[1] += b[1];

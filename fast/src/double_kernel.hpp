@@ -15,11 +15,11 @@ namespace hinge::fast::detail {
 // (src/hinge_kernel_double.cpp); all give the same bits.
 void hinge_kernel_double(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);
 // Hinges x[0 .. count) into out[0 .. count), two at a time where the processor has AVX-512.
-void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, bool want_hessian, HingeDerivatives<double>* out);
+void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, bool want_hessian,
+                         HingeDerivatives<double>* out);
 // The faithful mode (hinge/fast/faithful.hpp) of the same kernel.
 void hinge_kernel_faithful(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);
 // hinge_derivatives_into (hinge/fast/hinge_kernel.hpp).
 void hinge_kernel_into(const std::array<double, 12>& x, double& theta, double* grad, double* hess);
-
 
 }  // namespace hinge::fast::detail

@@ -107,8 +107,8 @@ namespace {
 double near_flat_theta(const std::array<double, 12>& x, int exponent, const FaithfulTheta& f) {
   const ScaledDeterminant D = exact_hinge_determinant(x, exponent);
   const Quad l0_squared = quad(f.l0_squared);
-  const Quad sine = ldexp(abs((Quad(D.hi) + Quad(D.mid)) + Quad(D.lo)), static_cast<int>(D.e)) * (l0_squared * sqrt(l0_squared)) *
-                    (quad(f.K) * quad(f.K_lower));
+  const Quad sine = ldexp(abs((Quad(D.hi) + Quad(D.mid)) + Quad(D.lo)), static_cast<int>(D.e)) *
+                    (l0_squared * sqrt(l0_squared)) * (quad(f.K) * quad(f.K_lower));
   const Quad cosine = 1 - quad(f.minus2) / 2;
   return static_cast<double>(atan2(sine, cosine));
 }

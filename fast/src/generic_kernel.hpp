@@ -31,19 +31,19 @@
 #include "columns.hpp"
 #include "exact.hpp"
 #include "faithful_theta.hpp"
-#include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/core/hinge_checks.hpp"
 #include "hinge/core/predicates.hpp"
+#include "hinge/fast/hinge_kernel.hpp"
 
 namespace hinge::fast {
 
 // The per-triangle summary of the header comment, in Scalar.
 template <class Scalar>
 struct HingeTriangle {
-  std::array<Scalar, 3> n;                // unit normal (n, or n~ for the lower triangle)
-  std::array<std::array<Scalar, 3>, 3> q; // q_j = m_j / h_j
-  std::array<Scalar, 3> a;                // a_0 = 1/h_0, a_1 = cos(alpha_2)/h_1, a_2 = cos(alpha_1)/h_2
-  std::array<Scalar, 3> r0;               // m_0 / l_0^2
+  std::array<Scalar, 3> n;                 // unit normal (n, or n~ for the lower triangle)
+  std::array<std::array<Scalar, 3>, 3> q;  // q_j = m_j / h_j
+  std::array<Scalar, 3> a;                 // a_0 = 1/h_0, a_1 = cos(alpha_2)/h_1, a_2 = cos(alpha_1)/h_2
+  std::array<Scalar, 3> r0;                // m_0 / l_0^2
 };
 
 namespace detail {
@@ -66,15 +66,27 @@ struct Pair {
   friend HINGE_FAST_INLINE Pair operator-(const Pair& a) { return {{-a[0], -a[1]}}; }
 };
 using DD2 = DoubleDoubleOf<Lanes2>;
-template <class Scalar> struct WideOf { using type = Pair<Scalar>; };
-template <> struct WideOf<float> { using type = Lanes2; };
-template <> struct WideOf<long double> { using type = DD2; };
-template <class Scalar> using Wide = typename WideOf<Scalar>::type;
+template <class Scalar>
+struct WideOf {
+  using type = Pair<Scalar>;
+};
+template <>
+struct WideOf<float> {
+  using type = Lanes2;
+};
+template <>
+struct WideOf<long double> {
+  using type = DD2;
+};
+template <class Scalar>
+using Wide = typename WideOf<Scalar>::type;
 // Whether W's range is double's (float's and long double's kernels): the kernel then checks in_range()
 // and falls back to wide_range_kernel outside it.
-template <class W> inline constexpr bool kDoubleRange = std::is_same_v<W, Lanes2> || std::is_same_v<W, DD2>;
+template <class W>
+inline constexpr bool kDoubleRange = std::is_same_v<W, Lanes2> || std::is_same_v<W, DD2>;
 
-template <class W> using Vec = std::array<W, 3>;
+template <class W>
+using Vec = std::array<W, 3>;
 
 // --- arithmetic in the wide type ------------------------------------------------------------------
 
@@ -216,14 +228,14 @@ HINGE_FAST_INLINE bool in_range(const W& L0, const W& S, double P2) {
 template <class Scalar, class W>
 HINGE_FAST_INLINE void triangles(const Vec<W>& f0, const Vec<W>& f1, const Vec<W>& f2, const Vec<W>& C, const W& L0,
                                  const W& S, HingeTriangle<Scalar>& T, HingeTriangle<Scalar>& U, Vec<W>& unit_normal) {
-  const W D1 = dot(f2, f0);                                      // e_2 . e_0
-  const W D2 = dot(f0, f1);                                      // e_0 . e_1
+  const W D1 = dot(f2, f0);                                              // e_2 . e_0
+  const W D2 = dot(f0, f1);                                              // e_0 . e_1
   const Vec<W> X0 = cross(f0, C), X1 = cross(f1, C), X2 = cross(f2, C);  // (2A)^2 q_j
-  const W rA = inverse_sqrt(S);                                  // 1 / (2A)
+  const W rA = inverse_sqrt(S);                                          // 1 / (2A)
   const W invS = rA * rA;
-  const W rl0 = inverse_sqrt(L0);                                // 1 / l_0
-  const W K = rA * rl0;                                          // 1 / (l_0 2A)
-  const W RL = rl0 * rl0;                                        // 1 / l_0^2
+  const W rl0 = inverse_sqrt(L0);  // 1 / l_0
+  const W K = rA * rl0;            // 1 / (l_0 2A)
+  const W RL = rl0 * rl0;          // 1 / l_0^2
   HINGE_FAST_UNROLL
   for (int k = 0; k < 3; ++k) {
     unit_normal[k] = C[k] * rA;
@@ -231,12 +243,17 @@ HINGE_FAST_INLINE void triangles(const Vec<W>& f0, const Vec<W>& f1, const Vec<W
       member(T)[k] = v[0];
       member(U)[k] = v[1];
     };
-    set([](auto& t) -> auto& { return t.n; }, product_rounded<Scalar>(C[k], rA));
-    set([](auto& t) -> auto& { return t.q[0]; }, product_rounded<Scalar>(X0[k], invS));
-    set([](auto& t) -> auto& { return t.q[1]; }, product_rounded<Scalar>(X1[k], invS));
-    set([](auto& t) -> auto& { return t.q[2]; }, product_rounded<Scalar>(X2[k], invS));
+    set(
+        [](auto& t) -> auto& { return t.n; }, product_rounded<Scalar>(C[k], rA));
+    set(
+        [](auto& t) -> auto& { return t.q[0]; }, product_rounded<Scalar>(X0[k], invS));
+    set(
+        [](auto& t) -> auto& { return t.q[1]; }, product_rounded<Scalar>(X1[k], invS));
+    set(
+        [](auto& t) -> auto& { return t.q[2]; }, product_rounded<Scalar>(X2[k], invS));
     // r_0 = m_0 / l_0^2 with m_0 = X0 K: never 1 / (l_0^3 2A), which can overflow when r_0 does not
-    set([](auto& t) -> auto& { return t.r0; }, product_rounded<Scalar>(X0[k] * K, RL));
+    set(
+        [](auto& t) -> auto& { return t.r0; }, product_rounded<Scalar>(X0[k] * K, RL));
   }
   const std::array<Scalar, 2> a0 = product_rounded<Scalar>(L0, K);  // 1/h_0 = l_0 / (2A)
   const std::array<Scalar, 2> a1 = product_rounded<Scalar>(D2, K);  // cos(alpha_2)/h_1 = -(e_0 . e_1) / (l_0 2A)
@@ -285,10 +302,12 @@ HINGE_FAST_INLINE void hessian(const HingeTriangle<Scalar>& T, const HingeTriang
     store<Scalar>(at(1, 1, c), (A.a1 * (A.n * A.q1[c] + A.q1 * A.n[c]) + B.a1 * (B.n * B.q1[c] + B.q1 * B.n[c])) - sym);
     store<Scalar>(at(2, 2, c), (A.a2 * (A.n * A.q2[c] + A.q2 * A.n[c]) + B.a2 * (B.n * B.q2[c] + B.q2 * B.n[c])) - sym);
     // H12 = P_12 + P_21^T + P~_12 + P~_21^T + N_0 + N~_0, and H21 = H12^T
-    store<Scalar>(at(1, 2, c), ((A.a1 * (A.q2 * A.n[c]) + A.a2 * (A.n * A.q1[c])) +
-                                (B.a1 * (B.q2 * B.n[c]) + B.a2 * (B.n * B.q1[c]))) + sym);
-    store<Scalar>(at(2, 1, c), ((A.a1 * (A.n * A.q2[c]) + A.a2 * (A.q1 * A.n[c])) +
-                                (B.a1 * (B.n * B.q2[c]) + B.a2 * (B.q1 * B.n[c]))) + sym);
+    store<Scalar>(
+        at(1, 2, c),
+        ((A.a1 * (A.q2 * A.n[c]) + A.a2 * (A.n * A.q1[c])) + (B.a1 * (B.q2 * B.n[c]) + B.a2 * (B.n * B.q1[c]))) + sym);
+    store<Scalar>(
+        at(2, 1, c),
+        ((A.a1 * (A.n * A.q2[c]) + A.a2 * (A.q1 * A.n[c])) + (B.a1 * (B.n * B.q2[c]) + B.a2 * (B.q1 * B.n[c]))) + sym);
     // H10 = P_10 - Q_1 (erratum 1: cos(alpha_2) with vertex 1), H20 = P_20 - Q_2, and their mirrors
     store<Scalar>(at(1, 0, c), A.a1 * (A.q0 * A.n[c]) - A.a0 * (A.n * A.q1[c]));
     store<Scalar>(at(0, 1, c), A.a1 * (A.n * A.q0[c]) - A.a0 * (A.q1 * A.n[c]));
@@ -333,7 +352,8 @@ HINGE_FAST_INLINE Scalar lanes_combined(const W& a, double sign) {
 // Lane l of a wide value in Scalar (DD2: hi + lo).
 template <class Scalar, class W>
 HINGE_FAST_INLINE Scalar lane_value(const W& a, int l) {
-  if constexpr (std::is_same_v<W, DD2>) return static_cast<Scalar>(static_cast<Scalar>(a.hi[l]) + static_cast<Scalar>(a.lo[l]));
+  if constexpr (std::is_same_v<W, DD2>)
+    return static_cast<Scalar>(static_cast<Scalar>(a.hi[l]) + static_cast<Scalar>(a.lo[l]));
   else return static_cast<Scalar>(a[l]);
 }
 
@@ -343,9 +363,9 @@ HINGE_FAST_INLINE Scalar lane_value(const W& a, int l) {
 template <class Scalar>
 inline constexpr bool kNearFlatFromDeterminant = std::is_same_v<Scalar, long double> || std::is_same_v<Scalar, dd> ||
 #if HINGE_HAVE_FLOAT128
-                                                  std::is_same_v<Scalar, float128> ||
+                                                 std::is_same_v<Scalar, float128> ||
 #endif
-                                                  std::is_same_v<Scalar, bin128>;
+                                                 std::is_same_v<Scalar, bin128>;
 
 // 2^-2m for a normal m = M in [2^m, 2^(m+1)) with |m| <= 500 (exact, from the exponent bits).
 HINGE_FAST_INLINE double inverse_square_power_of_two(double M) {
@@ -411,7 +431,8 @@ inline Vec<Pair<long double>> exact_cross(const std::array<double, 12>& x) {
     const double* c = &x[6];
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const double factors[6][2] = {{a[i], b[j]}, {-a[j], b[i]}, {b[i], c[j]}, {-b[j], c[i]}, {c[i], a[j]}, {-c[j], a[i]}};
+      const double factors[6][2] = {{a[i], b[j]},  {-a[j], b[i]}, {b[i], c[j]},
+                                    {-b[j], c[i]}, {c[i], a[j]},  {-c[j], a[i]}};
       long double terms[12];
       for (int t = 0; t < 6; ++t) {
         const long double u = factors[t][0], v = factors[t][1];
@@ -439,8 +460,7 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   double probe = 0;  // NaN when a coordinate is not finite
   for (double c : x) probe += c * 0.0;
   if (probe != 0) check_finite(x);  // throws, naming the coordinate
-  if (x[3] == x[6] && x[4] == x[7] && x[5] == x[8])
-    throw_zero_hinge_edge();
+  if (x[3] == x[6] && x[4] == x[7] && x[5] == x[8]) throw_zero_hinge_edge();
 
   // Lane 0: the upper triangle's edges e0, e1 = x0 - x2, e2 = x1 - x0; lane 1: the lower triangle's
   // e0, e~1 = x3 - x2, e~2 = x1 - x3 (the paper's labels (x3, x1, x2)).
@@ -460,7 +480,8 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
       double m = 0;
       for (int c = 0; c < 3; ++c)
         for (int l = 0; l < 2; ++l)
-          m = std::max({m, std::fabs(high_part(f0[c], l)), std::fabs(high_part(f1[c], l)), std::fabs(high_part(f2[c], l))});
+          m = std::max(
+              {m, std::fabs(high_part(f0[c], l)), std::fabs(high_part(f1[c], l)), std::fabs(high_part(f2[c], l))});
       return m;
     };
     // The edges are brought to M in [1, 2) by a power of two 2^-p: exact but for low parts that become
@@ -502,7 +523,7 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   Vec<W> nw;
   triangles<Scalar>(f0, f1, f2, C, L0, S, T, U, nw);
   for (int k = 0; k < 3; ++k) U.n[k] = -U.n[k];  // n~ = -C~ / |C~|: the lower labels run clockwise
-  check_areas(x);  // exactly (hinge_checks.hpp)
+  check_areas(x);                                // exactly (hinge_checks.hpp)
 
   // theta = sgn 2 atan2(|n - n~|, |n + n~|) (Fig. 3 and eq. (12)), the sign decided exactly; with n~ the
   // negated lane 1, n - n~ and n + n~ are the sum and difference of the two lanes.
@@ -530,7 +551,7 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
   using std::atan2;
   using std::sqrt;
   const Scalar s_minus = sqrt(minus[0] * minus[0] + minus[1] * minus[1] + minus[2] * minus[2]);  // 2 sin(theta/2)
-  const Scalar s_plus = sqrt(plus[0] * plus[0] + plus[1] * plus[1] + plus[2] * plus[2]);       // 2 cos(theta/2)
+  const Scalar s_plus = sqrt(plus[0] * plus[0] + plus[1] * plus[1] + plus[2] * plus[2]);         // 2 cos(theta/2)
   if (sign == 0) {  // coplanar: theta is 0 or pi exactly
     const bool folded = T.n[0] * U.n[0] + T.n[1] * U.n[1] + T.n[2] * U.n[2] < 0;
     out.on_branch_cut = folded;
@@ -547,8 +568,9 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
         using std::abs;
         using std::ldexp;
         const ScaledDeterminant D = exact_hinge_determinant(x, exponent);
-        const Scalar sine = ldexp(abs(Scalar(Scalar(Scalar(D.hi) + Scalar(D.mid)) + Scalar(D.lo))), static_cast<int>(D.e)) *
-                            sqrt(lane_value<Scalar>(L0, 0)) / (sqrt(lane_value<Scalar>(S, 0)) * sqrt(lane_value<Scalar>(S, 1)));
+        const Scalar sine =
+            ldexp(abs(Scalar(Scalar(Scalar(D.hi) + Scalar(D.mid)) + Scalar(D.lo))), static_cast<int>(D.e)) *
+            sqrt(lane_value<Scalar>(L0, 0)) / (sqrt(lane_value<Scalar>(S, 0)) * sqrt(lane_value<Scalar>(S, 1)));
         t = atan2(sine, Scalar(1 - s_minus * s_minus / 2));
       }
     out.theta = sign < 0 ? Scalar(-t) : t;
@@ -571,7 +593,8 @@ HINGE_FAST_INLINE void hinge_kernel(const std::array<double, 12>& x, bool want_h
       for (int i = 0; i < 144; ++i) out.hess.data()[i] = ldexp(out.hess.data()[i], -2 * exponent);
   }
   if constexpr (kRanged)
-    if (!fast_range) [[unlikely]] wide_range_kernel(x, want_hessian, out);  // the same checks passed above
+    if (!fast_range) [[unlikely]]
+      wide_range_kernel(x, want_hessian, out);  // the same checks passed above
 }
 
 // The results of a long double evaluation `w` rounded to Scalar once, into `out` (on the branch cut theta
@@ -595,7 +618,8 @@ void round_into(const HingeDerivatives<long double>& w, HingeDerivatives<Scalar>
 // to long double: relative errors ~2^-64 each, no cancellation beyond the problem's own), every result
 // rounded to Scalar once. Not inlined: it is rare, and large.
 template <class Scalar>
-[[gnu::noinline]] void wide_range_kernel(const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<Scalar>& out) {
+[[gnu::noinline]] void wide_range_kernel(const std::array<double, 12>& x, bool want_hessian,
+                                         HingeDerivatives<Scalar>& out) {
   HingeDerivatives<long double> w;
   hinge_kernel<long double, true>(x, want_hessian, w);
   round_into(w, out);

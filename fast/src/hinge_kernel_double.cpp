@@ -10,14 +10,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 #include <string>
-#include <limits>
 
 #include "dispatch.hpp"
+#include "double_kernel.hpp"
 #include "hinge/fast/faithful.hpp"
 #include "hinge/fast/isa.hpp"
-#include "double_kernel.hpp"
 #include "hinge_kernel_lanes.hpp"
 
 namespace hinge::fast::detail {
@@ -51,16 +51,16 @@ HINGE_FAST_TARGET_V4 void faithful_v4(const std::array<double, 12>* const* x, bo
                                       LanesOutcome* o) {
   lanes_kernel<Zmm8, false, 1, true>(x, h, out, o);
 }
-HINGE_FAST_TARGET_V4 void faithful_rescaled_v4(const std::array<double, 12>* const* x, bool h,
-                                               const Destination* out, LanesOutcome* o) {
+HINGE_FAST_TARGET_V4 void faithful_rescaled_v4(const std::array<double, 12>* const* x, bool h, const Destination* out,
+                                               LanesOutcome* o) {
   lanes_kernel<Zmm8, true, 1, true>(x, h, out, o);
 }
 HINGE_FAST_TARGET_V3 void faithful_v3(const std::array<double, 12>* const* x, bool h, const Destination* out,
                                       LanesOutcome* o) {
   lanes_kernel<Ymm8, false, 1, true>(x, h, out, o);
 }
-HINGE_FAST_TARGET_V3 void faithful_rescaled_v3(const std::array<double, 12>* const* x, bool h,
-                                               const Destination* out, LanesOutcome* o) {
+HINGE_FAST_TARGET_V3 void faithful_rescaled_v3(const std::array<double, 12>* const* x, bool h, const Destination* out,
+                                               LanesOutcome* o) {
   lanes_kernel<Ymm8, true, 1, true>(x, h, out, o);
 }
 void faithful_baseline(const std::array<double, 12>* const* x, bool h, const Destination* out, LanesOutcome* o) {
@@ -73,8 +73,7 @@ void faithful_rescaled_baseline(const std::array<double, 12>* const* x, bool h, 
 void kernel_baseline(const std::array<double, 12>* const* x, bool h, const Destination* out, LanesOutcome* o) {
   lanes_kernel<Sse8, false>(x, h, out, o);
 }
-void rescaled_baseline(const std::array<double, 12>* const* x, bool h, const Destination* out,
-                       LanesOutcome* o) {
+void rescaled_baseline(const std::array<double, 12>* const* x, bool h, const Destination* out, LanesOutcome* o) {
   lanes_kernel<Sse8, true>(x, h, out, o);
 }
 
@@ -97,12 +96,14 @@ void evaluate_faithful(const Kernels& kernels, const std::array<double, 12>& x, 
 // nondegenerate, theta's sign decided and nonzero, and none of the rare paths below (short hinge edge,
 // nearly flat or folded with a shortish one, nearly flat).
 bool common_outcome(const LanesOutcome& o) {
-  return o.status == LanesOutcome::computed && o.fast_range && o.exponent == 0 && o.certain_upper &&
-         o.certain_lower && o.sign != kUndecided && o.sign != 0 && !o.short_hinge_edge &&
+  return o.status == LanesOutcome::computed && o.fast_range && o.exponent == 0 && o.certain_upper && o.certain_lower &&
+         o.sign != kUndecided && o.sign != 0 && !o.short_hinge_edge &&
          !(o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6) && !(o.s_minus < 0x1p-40);
 }
 // theta from the outcome, its sign decided (copysign rather than a branch on the sign, which is data).
-double theta_of(const LanesOutcome& o, int sign) { return std::copysign(2 * std::atan2(o.s_minus, o.s_plus), double(sign)); }
+double theta_of(const LanesOutcome& o, int sign) {
+  return std::copysign(2 * std::atan2(o.s_minus, o.s_plus), double(sign));
+}
 
 // The outcome `o` of the vector work on x (its results already in `out`), completed (`faithful`: of the
 // faithful kernels).
@@ -117,7 +118,8 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
   }
   const std::array<double, 12>* xs[1] = {&x};
   const Destination outs[1] = {destination(out)};
-  if (o.status == LanesOutcome::rescale) [[unlikely]] (faithful ? kernels.faithful_rescaled : kernels.rescaled)(xs, want_hessian, outs, &o);
+  if (o.status == LanesOutcome::rescale) [[unlikely]]
+    (faithful ? kernels.faithful_rescaled : kernels.rescaled)(xs, want_hessian, outs, &o);
   if (o.status == LanesOutcome::not_finite) check_finite(x);  // throws, naming the coordinate
   if (o.status == LanesOutcome::zero_hinge_edge) throw_zero_hinge_edge();
   // Validity and the sign, exactly where the filters could not decide (the generic kernel's checks, in
@@ -141,8 +143,10 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
     if (want_hessian)
       for (int i = 0; i < 144; ++i) out.hess.data()[i] = std::ldexp(out.hess.data()[i], -2 * o.exponent);
   }
-  if (!o.fast_range) [[unlikely]] wide_range_kernel(x, want_hessian, out);  // the same checks passed above
-  else if (!faithful && (o.short_hinge_edge || (o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6))) [[unlikely]]
+  if (!o.fast_range) [[unlikely]]
+    wide_range_kernel(x, want_hessian, out);  // the same checks passed above
+  else if (!faithful && (o.short_hinge_edge || (o.shortish_hinge_edge && std::min(o.s_minus, o.s_plus) < 0x1p-6)))
+      [[unlikely]]
     evaluate_faithful(kernels, x, want_hessian, out);  // |theta| or pi - |theta| below ~2^-6
   // Nearly flat (|theta| < 2^-40): |n - n~| is theta itself, and the double-double normals' absolute
   // error of ~2^-104 is 2^-102 / theta relative (18.7 units of 2^-53 measured at theta ~ 1e-16): theta
@@ -155,7 +159,8 @@ void complete(const Kernels& kernels, const std::array<double, 12>& x, bool want
 }
 
 // The vector work of `kernels` on x, completed.
-void evaluate(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
+void evaluate(const Kernels& kernels, const std::array<double, 12>& x, bool want_hessian,
+              HingeDerivatives<double>& out) {
   const std::array<double, 12>* xs[1] = {&x};
   const Destination outs[1] = {destination(out)};
   LanesOutcome o;
@@ -248,7 +253,8 @@ void hinge_kernel_double(const std::array<double, 12>& x, bool want_hessian, Hin
   evaluate(best_kernels(), x, want_hessian, out);
 }
 
-void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, bool want_hessian, HingeDerivatives<double>* out) {
+void hinge_kernel_double(const std::array<double, 12>* x, std::size_t count, bool want_hessian,
+                         HingeDerivatives<double>* out) {
   evaluate_all(best_kernels(), x, count, want_hessian, out);
 }
 
@@ -285,7 +291,8 @@ bool isa_available(Isa isa) {
 Isa active_isa() {
   static const Isa isa = [] {
     const char* value = std::getenv("HINGE_ISA");
-    if (!value || !*value) return isa_available(Isa::avx512) ? Isa::avx512 : isa_available(Isa::avx2) ? Isa::avx2 : Isa::baseline;
+    if (!value || !*value)
+      return isa_available(Isa::avx512) ? Isa::avx512 : isa_available(Isa::avx2) ? Isa::avx2 : Isa::baseline;
     const std::string name = value;
     for (Isa candidate : {Isa::avx512, Isa::avx2, Isa::baseline})
       if (name == isa_name(candidate)) {
@@ -309,7 +316,8 @@ void hinge_derivatives_into(const std::array<double, 12>& x, double& theta, doub
   detail::hinge_kernel_into(x, theta, grad, hess);
 }
 
-bool faithful_hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out) {
+bool faithful_hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian,
+                                HingeDerivatives<double>& out) {
   if (!isa_available(isa)) return false;
   detail::evaluate_faithful(detail::kernels_for(isa), x, want_hessian, out);
   return true;

@@ -24,14 +24,15 @@ void hinge_derivatives(std::span<const std::array<double, 12>> x, std::span<Hing
                        bool want_hessian) {
   if (x.size() != out.size()) throw std::invalid_argument("hinge_derivatives: x and out differ in size");
   check_fp_environment();
-  if constexpr (std::is_same_v<Scalar, double>) detail::hinge_kernel_double(x.data(), x.size(), want_hessian, out.data());
-  else for (std::size_t i = 0; i < x.size(); ++i) detail::hinge_kernel(x[i], want_hessian, out[i]);
+  if constexpr (std::is_same_v<Scalar, double>)
+    detail::hinge_kernel_double(x.data(), x.size(), want_hessian, out.data());
+  else
+    for (std::size_t i = 0; i < x.size(); ++i) detail::hinge_kernel(x[i], want_hessian, out[i]);
 }
-
 
 }  // namespace hinge::fast
 
-#define HINGE_FAST_HINGE_INSTANTIATE(S)                                                                         \
+#define HINGE_FAST_HINGE_INSTANTIATE(S)                                                                               \
   template ::hinge::fast::HingeDerivatives<S> hinge::fast::hinge_derivatives<S>(const std::array<double, 12>&, bool); \
-  template void hinge::fast::hinge_derivatives<S>(std::span<const std::array<double, 12>>,                       \
+  template void hinge::fast::hinge_derivatives<S>(std::span<const std::array<double, 12>>,                            \
                                                   std::span<::hinge::fast::HingeDerivatives<S>>, bool);

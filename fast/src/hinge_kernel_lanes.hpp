@@ -127,7 +127,7 @@ template <class L>
 HINGE_FAST_INLINE void store_gradient(const L g[3], double* grad) {
   if constexpr (std::is_same_v<L, Zmm8>) {
     const Double8 xy = __builtin_shuffle(g[0].v, g[1].v, Index8{0, 8, 0, 1, 9, 1, 2, 10});  // x0 y0 _ x1 y1 _ x2 y2
-    const Double8 head = __builtin_shuffle(xy, g[2].v, Index8{0, 1, 8, 3, 4, 9, 6, 7});    // x0 y0 z0 x1 y1 z1 x2 y2
+    const Double8 head = __builtin_shuffle(xy, g[2].v, Index8{0, 1, 8, 3, 4, 9, 6, 7});     // x0 y0 z0 x1 y1 z1 x2 y2
     const Double8 tail = __builtin_shuffle(g[0].v, g[1].v, Index8{4, 12, 4, 12, 4, 12, 4, 12});  // x3 y3 ...
     const Double4 last{g[2].v[2], tail[0], tail[1], g[2].v[4]};                                  // z2 x3 y3 z3
     std::memcpy(grad, &head, sizeof head);
@@ -152,7 +152,8 @@ HINGE_FAST_INLINE void store_gradient(const L g[3], double* grad) {
 template <class T>
 HINGE_FAST_INLINE void lanes_hessian(const T n[3], const T nv, const T q[3], const T a, const T rv, double* hess) {
   using L = decltype(rounded(a));
-  const T c = scaled_exactly(a, L::make(-1, 1, 1, 0, -1, 1, 1, 0));  // eq. (4): grad_{x_I} theta = c_I n on each triangle
+  const T c =
+      scaled_exactly(a, L::make(-1, 1, 1, 0, -1, 1, 1, 0));  // eq. (4): grad_{x_I} theta = c_I n on each triangle
   const T cb[3] = {spread_of<0>(c), spread_of<1>(c), spread_of<2>(c)};
   // The vectors q_J with their components in lanes 0 .. 2 of each half (lane 3: don't care).
   const T qv[3] = {lanes_of<0>(q[0], q[1], q[2]), lanes_of<1>(q[0], q[1], q[2]), lanes_of<2>(q[0], q[1], q[2])};
@@ -167,7 +168,9 @@ HINGE_FAST_INLINE void lanes_hessian(const T n[3], const T nv, const T q[3], con
   HINGE_FAST_UNROLL
   for (int k = 0; k < 3; ++k) {
     const T nq[3] = {nv * spread_of<0>(q[k]), nv * spread_of<1>(q[k]), nv * spread_of<2>(q[k])};  // n q_I[k]
-    auto block = [&](int I, int J) HINGE_FAST_LAMBDA_INLINE { return cb[I] * (qv[J] * n[k]) + cb[J] * nq[I]; };  // eq. (6): upper | lower
+    auto block = [&](int I, int J) HINGE_FAST_LAMBDA_INLINE {
+      return cb[I] * (qv[J] * n[k]) + cb[J] * nq[I];
+    };  // eq. (6): upper | lower
     // eq. (6): column k of x0 (H00, H10, H20, 0) and of x3 (0, H13, H23, H33: the lower triangle's H10, H20, H00).
     const L b00 = rounded(block(0, 0)), b10 = rounded(block(1, 0)), b20 = rounded(block(2, 0));
     store_column(hess + 12 * k, b00.lo4(), b10.lo4(), b20.lo4(), zero);
@@ -242,12 +245,12 @@ HINGE_FAST_INLINE W pick12_of(const double* const* y) {
 // (hinge/fast/faithful.hpp): the per-triangle quantities stay double-doubles and eqs. (4) and (6) run in
 // double-double, each output rounded once; no short-hinge-edge path is needed.
 template <class L, bool kRescaled, int B = 1, bool kFaithful = false>
-HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, bool want_hessian,
-                                    const Destination* out, LanesOutcome* o) {
+HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, bool want_hessian, const Destination* out,
+                                    LanesOutcome* o) {
   static_assert(B == 1 || (B == 2 && !kRescaled && !kFaithful));
   using W = std::conditional_t<B == 1, L, Twice<L>>;
   using D = DoubleDoubleOf<W>;
-  using V = Vec<D>;  // x, y, z
+  using V = Vec<D>;           // x, y, z
   auto each = [](auto&& f) {  // f(h) for h = 0 .. B - 1, a constant
     f(std::integral_constant<int, 0>{});
     if constexpr (B == 2) f(std::integral_constant<int, 1>{});
@@ -270,7 +273,8 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
     if (stop) return;
   }
   for (int h = 0; h < B; ++h)
-    if (x[h][3] == x[h][6] && x[h][4] == x[h][7] && x[h][5] == x[h][8] && rare(h, LanesOutcome::zero_hinge_edge)) return;
+    if (x[h][3] == x[h][6] && x[h][4] == x[h][7] && x[h][5] == x[h][8] && rare(h, LanesOutcome::zero_hinge_edge))
+      return;
 
   // Fig. 1: the edges e_i, exactly (two_diff): upper f0, f1, f2, f0 | lower f0, f1, f2, f0.
   auto edges = [](const double* const* y, V& F) {
@@ -288,7 +292,8 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   largest_component(F);
   if constexpr (!kRescaled) {
     for (int h = 0; h < B; ++h)
-      if (!(largest[h] <= 0x1p200 && largest[h] >= 0x1p-200) && rare(h, LanesOutcome::rescale)) [[unlikely]] return;
+      if (!(largest[h] <= 0x1p200 && largest[h] >= 0x1p-200) && rare(h, LanesOutcome::rescale)) [[unlikely]]
+        return;
   } else {
     if (!(largest[0] <= std::numeric_limits<double>::max())) {
       std::array<double, 12> quarter;
@@ -299,7 +304,8 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
       largest_component(F);
     }
     const int shift = std::ilogb(largest[0]);  // largest > 0: x1 != x2
-    for (int c = 0; c < 3; ++c) F[c] = {scaled_by_power_of_two(F[c].hi, -shift), scaled_by_power_of_two(F[c].lo, -shift)};
+    for (int c = 0; c < 3; ++c)
+      F[c] = {scaled_by_power_of_two(F[c].hi, -shift), scaled_by_power_of_two(F[c].lo, -shift)};
     o[0].exponent += shift;
     largest_component(F);  // in [1, 2)
   }
@@ -309,9 +315,9 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   const D f0_yzx = lanes_of<0>(F[1], F[2], F[0]), f0_zxy = lanes_of<0>(F[2], F[0], F[1]);
   const D f2_yzx = lanes_of<2>(F[1], F[2], F[0]), f2_zxy = lanes_of<2>(F[2], F[0], F[1]);
   const D Cv = difference_of_products(f2_yzx, f0_zxy, f2_zxy, f0_yzx);  // eq. (4)'s n: f2 x f0 = 2A n | -2A~ n~
-  const V C{spread_dd<0>(Cv), spread_dd<1>(Cv), spread_dd<2>(Cv)};     // the same, component c in every lane
+  const V C{spread_dd<0>(Cv), spread_dd<1>(Cv), spread_dd<2>(Cv)};      // the same, component c in every lane
   const V X = cross(F, C);                                              // eq. (5): lane j (2A)^2 q_j, q_j = m_j / h_j
-  V Dl, Dr;  // lanes (C, f0, f2, f0) . (C, f0, f0, f1)
+  V Dl, Dr;                                                             // lanes (C, f0, f2, f0) . (C, f0, f0, f1)
   HINGE_FAST_UNROLL
   for (int c = 0; c < 3; ++c) {
     Dl[c] = blend_dd<0, 1, 1, 1>(C[c], permute_dd<0, 0, 2, 0>(F[c]));
@@ -323,7 +329,8 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
   each([&](auto h) {
     const double P2 = inverse_square_power_of_two(largest[h]);
     const L& S = part<h>(dots.hi);
-    o[h].fast_range = (S.lane(0) * P2) * P2 >= 0x1p-140 && (S.lane(4) * P2) * P2 >= 0x1p-140 && S.lane(1) * P2 >= 0x1p-500;
+    o[h].fast_range =
+        (S.lane(0) * P2) * P2 >= 0x1p-140 && (S.lane(4) * P2) * P2 >= 0x1p-140 && S.lane(1) * P2 >= 0x1p-500;
   });
   const W one = W::broadcast(1), nothing = W::broadcast(0);
   // 1/2A and 1/l_0 start from y = 1/sqrt of estimates in double formed before the dot products (so that
@@ -347,14 +354,14 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
     });
   const W y = one / root(estimates);  // lanes 0, 1: y_S, y_L (2, 3: 1)
   const W half_e = rsqrt_correction(D{blend<0, 0, 1, 1>(dots.hi, one), blend<0, 0, 1, 1>(dots.lo, nothing)}, y);  // e/2
-  const D yy = two_prod(permute<0, 0, 1, 1>(y), permute<0, 1, 1, 1>(y));  // y_S^2, y_S y_L, y_L^2
-  const W ee = permute<0, 0, 1, 1>(half_e) + permute<0, 1, 1, 1>(half_e);   // e_S, (e_S + e_L)/2, e_L
+  const D yy = two_prod(permute<0, 0, 1, 1>(y), permute<0, 1, 1, 1>(y));   // y_S^2, y_S y_L, y_L^2
+  const W ee = permute<0, 0, 1, 1>(half_e) + permute<0, 1, 1, 1>(half_e);  // e_S, (e_S + e_L)/2, e_L
   const D G{yy.hi, yy.lo + yy.hi * ee};  // eq. (5)'s omega_ij factors: 1/(2A)^2, K = 1/(l_0 2A), 1/l_0^2
   const D invS = spread_dd<0>(G), K = spread_dd<1>(G), RL = spread_dd<2>(G);
 
   const W lower_negated = W::make(1, 1, 1, 1, -1, -1, -1, -1);
   const D nw = times_corrected(Cv, spread<0>(y), spread<0>(half_e));  // n | -n~, double-double
-  const W nv = nw.hi * lower_negated;       // n | n~ (the lower labels run clockwise)
+  const W nv = nw.hi * lower_negated;                                 // n | n~ (the lower labels run clockwise)
   // The per-triangle quantities n, q_j, r_0, a_j, each rounded to double once (the faithful mode: kept in
   // double-double).
   auto summaries = [&](auto product) HINGE_FAST_LAMBDA_INLINE {
@@ -369,7 +376,8 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
     for (int c = 0; c < 3; ++c) s.q[c] = product(X[c], invS);  // eq. (5): lane j q_j = m_j / h_j
     // eq. (5): N_0 = n r_0^T, r_0 = m_0 / l_0^2, with m_0 = X_0 K (never 1 / (l_0^3 2A), which can overflow)
     s.rv = product(lanes_of<0>(X[0], X[1], X[2]) * K, RL);
-    // eq. (4): a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 . e_0) / (l_0 2A)
+    // eq. (4): a_0 = l_0 / 2A, a_1 = cos(alpha_2) / h_1 = -(e_0 . e_1) / (l_0 2A), a_2 = cos(alpha_1) / h_2 = -(e_2 .
+    // e_0) / (l_0 2A)
     s.a = scaled_exactly(product(permute_dd<1, 3, 2, 3>(dots), K), W::make(1, -1, -1, 0, 1, -1, -1, 0));
     return s;
   };
@@ -403,7 +411,7 @@ HINGE_FAST_INLINE void lanes_kernel(const std::array<double, 12>* const* xs, boo
     double computed;
     o[0].sign = orientation_filter(p, qq, r, computed);
   } else {
-    const W p = lanes_of<0>(F[0].hi, F[1].hi, F[2].hi);                        // lanes k: p_k
+    const W p = lanes_of<0>(F[0].hi, F[1].hi, F[2].hi);                                        // lanes k: p_k
     const W m1 = f2_yzx.hi * swap_halves(f2_zxy.hi), m2 = f2_zxy.hi * swap_halves(f2_yzx.hi);  // q_i r_j, q_j r_i
     const W det = sum_of_three(p * (m1 - m2)), perm = sum_of_three(magnitude(p) * (magnitude(m1) + magnitude(m2)));
     // The guard: every |p_k|, |q_k|, |r_k| zero or in [2^-300, 2^300] (the upper limit holds: M <= 2^200);

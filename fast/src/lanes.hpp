@@ -130,7 +130,8 @@ HINGE_FAST_INLINE Double4 on_halves(Double4 a, Double4 b, Double4 c, Op op) {
   return r;
 }
 HINGE_FAST_INLINE Double4 fused_without_fma(Double4 a, Double4 b, Double4 c) {
-  return on_halves(a, b, c, [](Double2 x, Double2 y, Double2 z) HINGE_FAST_LAMBDA_INLINE { return fused_without_fma(x, y, z); });
+  return on_halves(a, b, c,
+                   [](Double2 x, Double2 y, Double2 z) HINGE_FAST_LAMBDA_INLINE { return fused_without_fma(x, y, z); });
 }
 HINGE_FAST_INLINE Double4 product_error_without_fma(Double4 a, Double4 b, Double4 p) {
   return on_halves(a, b, p, [](Double2 x, Double2 y, Double2 z) HINGE_FAST_LAMBDA_INLINE {
@@ -170,7 +171,8 @@ HINGE_FAST_INLINE Halves8<kAvx2> root(Halves8<kAvx2> a) {
   Halves8<kAvx2> r;
   for (int k = 0; k < 2; ++k) {
     if constexpr (kAvx2) asm("vsqrtpd %1, %0" : "=x"(r.h[k]) : "x"(a.h[k]));
-    else for (int i = 0; i < 4; ++i) r.h[k][i] = __builtin_sqrt(a.h[k][i]);
+    else
+      for (int i = 0; i < 4; ++i) r.h[k][i] = __builtin_sqrt(a.h[k][i]);
   }
   return r;
 }
@@ -187,8 +189,9 @@ HINGE_FAST_INLINE Halves8<kAvx2> permute(Halves8<kAvx2> a) {
 // Lane j of each half from b where b_j is 1, else from a.
 template <int b0, int b1, int b2, int b3>
 HINGE_FAST_INLINE Zmm8 blend(Zmm8 a, Zmm8 b) {
-  return {__builtin_shuffle(a.v, b.v, Index8{b0 ? 8 : 0, b1 ? 9 : 1, b2 ? 10 : 2, b3 ? 11 : 3, b0 ? 12 : 4, b1 ? 13 : 5,
-                                             b2 ? 14 : 6, b3 ? 15 : 7})};
+  return {__builtin_shuffle(
+      a.v, b.v,
+      Index8{b0 ? 8 : 0, b1 ? 9 : 1, b2 ? 10 : 2, b3 ? 11 : 3, b0 ? 12 : 4, b1 ? 13 : 5, b2 ? 14 : 6, b3 ? 15 : 7})};
 }
 template <int b0, int b1, int b2, int b3, bool kAvx2>
 HINGE_FAST_INLINE Halves8<kAvx2> blend(Halves8<kAvx2> a, Halves8<kAvx2> b) {
@@ -199,8 +202,8 @@ HINGE_FAST_INLINE Halves8<kAvx2> blend(Halves8<kAvx2> a, Halves8<kAvx2> b) {
 template <int i0, int i1, int i2, int i3>
 HINGE_FAST_INLINE Zmm8 shuffle(Zmm8 a, Zmm8 b) {
   constexpr auto at = [](int i, int h) { return i < 4 ? 4 * h + i : 8 + 4 * h + (i - 4); };
-  return {__builtin_shuffle(a.v, b.v, Index8{at(i0, 0), at(i1, 0), at(i2, 0), at(i3, 0), at(i0, 1), at(i1, 1), at(i2, 1),
-                                             at(i3, 1)})};
+  return {__builtin_shuffle(
+      a.v, b.v, Index8{at(i0, 0), at(i1, 0), at(i2, 0), at(i3, 0), at(i0, 1), at(i1, 1), at(i2, 1), at(i3, 1)})};
 }
 template <int i0, int i1, int i2, int i3, bool kAvx2>
 HINGE_FAST_INLINE Halves8<kAvx2> shuffle(Halves8<kAvx2> a, Halves8<kAvx2> b) {
@@ -241,21 +244,24 @@ HINGE_FAST_INLINE L magnitude(L a) {
   constexpr long long kNoSign = 0x7fffffffffffffffLL;
   L r;
   if constexpr (std::is_same_v<L, Zmm8>) r.v = (Double8)((Index8)a.v & kNoSign);
-  else for (int k = 0; k < 2; ++k) r.h[k] = (Double4)((Index4)a.h[k] & kNoSign);
+  else
+    for (int k = 0; k < 2; ++k) r.h[k] = (Double4)((Index4)a.h[k] & kNoSign);
   return r;
 }
 template <class L>
 HINGE_FAST_INLINE L larger(L a, L b) {
   L r;
   if constexpr (std::is_same_v<L, Zmm8>) r.v = a.v > b.v ? a.v : b.v;
-  else for (int k = 0; k < 2; ++k) r.h[k] = a.h[k] > b.h[k] ? a.h[k] : b.h[k];
+  else
+    for (int k = 0; k < 2; ++k) r.h[k] = a.h[k] > b.h[k] ? a.h[k] : b.h[k];
   return r;
 }
 template <class L>
 HINGE_FAST_INLINE L smaller(L a, L b) {
   L r;
   if constexpr (std::is_same_v<L, Zmm8>) r.v = a.v < b.v ? a.v : b.v;
-  else for (int k = 0; k < 2; ++k) r.h[k] = a.h[k] < b.h[k] ? a.h[k] : b.h[k];
+  else
+    for (int k = 0; k < 2; ++k) r.h[k] = a.h[k] < b.h[k] ? a.h[k] : b.h[k];
   return r;
 }
 // The area filter of the double kernels: where a triangle's area is certainly nonzero, from a component

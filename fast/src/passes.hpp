@@ -22,14 +22,13 @@
 
 #include "columns.hpp"
 #include "exact.hpp"
-#include "hinge/fast/pattern.hpp"
 #include "hinge/core/energy.hpp"
 #include "hinge/core/predicates.hpp"
 #include "hinge/core/scalar.hpp"
+#include "hinge/fast/pattern.hpp"
 #include "triangle_kernel.hpp"
 
 namespace hinge::fast::detail {
-
 
 template <class Scalar>
 HINGE_FAST_INLINE Vec3<Scalar> point(const Mesh& mesh, Index v) {
@@ -52,7 +51,8 @@ HINGE_FAST_INLINE void face_pass_body(const Mesh& mesh, const Pattern& pattern, 
       suspect[f] = 0;
       continue;
     }
-    const Vec3<Scalar> x0 = point<Scalar>(mesh, F.v[0]), x1 = point<Scalar>(mesh, F.v[1]), x2 = point<Scalar>(mesh, F.v[2]);
+    const Vec3<Scalar> x0 = point<Scalar>(mesh, F.v[0]), x1 = point<Scalar>(mesh, F.v[1]),
+                       x2 = point<Scalar>(mesh, F.v[2]);
     const Vec3<Scalar> a = vsub(x1, x0), b = vsub(x2, x0);
     const Vec3<Scalar> N{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     const Scalar area2 = sqrt(vdot(N, N));
@@ -78,10 +78,11 @@ HINGE_FAST_INLINE void face_pass_body(const Mesh& mesh, const Pattern& pattern, 
 // computed determinant, on the folded side the filter's or, when it cannot decide, the exact one.
 template <class Scalar>
 HINGE_FAST_INLINE BendAngle<Scalar> bend_angle(const Mesh& mesh, const Hinge& h, const std::array<Scalar, 4>& nu,
-                                                          const std::array<Scalar, 4>& nl, bool want_theta) {
+                                               const std::array<Scalar, 4>& nl, bool want_theta) {
   using std::atan2;
   using std::sqrt;
-  const Vec3<Scalar> minus{nu[0] - nl[0], nu[1] - nl[1], nu[2] - nl[2]}, plus{nu[0] + nl[0], nu[1] + nl[1], nu[2] + nl[2]};
+  const Vec3<Scalar> minus{nu[0] - nl[0], nu[1] - nl[1], nu[2] - nl[2]},
+      plus{nu[0] + nl[0], nu[1] + nl[1], nu[2] + nl[2]};
   const Scalar sm = sqrt(vdot(minus, minus)), sp = sqrt(vdot(plus, plus));  // 2 sin(theta/2), 2 cos(theta/2)
   const auto& x0 = mesh.vertices[h.x[0]];
   const auto& x1 = mesh.vertices[h.x[1]];
@@ -160,7 +161,8 @@ HINGE_FAST_INLINE void add_scaled(Scalar* p, const Scalar& s, const Vec3<Scalar>
 // The block with columns B into the off-diagonal block `base` of column vertex b: added, or stored when
 // this is the block's first write (Pattern::Face::first: then the values need no zeroing).
 template <class Scalar>
-HINGE_FAST_INLINE void add_block(Scalar* values, SlotIndex base, SlotIndex stride, const Columns3<Scalar>& B, bool first) {
+HINGE_FAST_INLINE void add_block(Scalar* values, SlotIndex base, SlotIndex stride, const Columns3<Scalar>& B,
+                                 bool first) {
   Scalar* col[3] = {values + base, values + base + stride, values + base + 2 * stride + 1};
   if (first) {
     HINGE_FAST_UNROLL
@@ -236,12 +238,14 @@ HINGE_FAST_INLINE void assembly_pass_body(const Mesh& mesh, const Pattern& patte
         if (!mine(v)) continue;
         const char* p = reinterpret_cast<const char*>(values + outer[3 * static_cast<std::size_t>(v)]);
         const char* end = reinterpret_cast<const char*>(values + outer[3 * static_cast<std::size_t>(v) + 3]);
-        for (p = reinterpret_cast<const char*>(reinterpret_cast<std::uintptr_t>(p) & ~std::uintptr_t(63)); p < end; p += 64)
+        for (p = reinterpret_cast<const char*>(reinterpret_cast<std::uintptr_t>(p) & ~std::uintptr_t(63)); p < end;
+             p += 64)
           __builtin_prefetch(p, 1, 3);
       }
     const Pattern::Face& F = faces[f];
     if (F.highest < lo || F.lowest >= hi) continue;  // writes nothing here (or nothing at all)
-    const std::array<Vec3<Scalar>, 3> x{point<Scalar>(mesh, F.v[0]), point<Scalar>(mesh, F.v[1]), point<Scalar>(mesh, F.v[2])};
+    const std::array<Vec3<Scalar>, 3> x{point<Scalar>(mesh, F.v[0]), point<Scalar>(mesh, F.v[1]),
+                                        point<Scalar>(mesh, F.v[2])};
     const auto& fd = face[f];
     TriangleGeometry<Scalar> t;
     triangle_geometry(x[0], x[1], x[2], Vec3<Scalar>{fd[0], fd[1], fd[2]}, fd[3], t);  // lines 8-11
@@ -259,7 +263,7 @@ HINGE_FAST_INLINE void assembly_pass_body(const Mesh& mesh, const Pattern& patte
       const int j = next3(k), i = prev3(k);
       const Vec3<Scalar> xs = point<Scalar>(mesh, o.s);
       const auto& ft = face[o.other_face];
-      std::array<Vec3<Scalar>, 4> g;  // p, q, r, s
+      std::array<Vec3<Scalar>, 4> g;                                                      // p, q, r, s
       hinge_gradient(t, k, x[j], x[i], xs, Vec3<Scalar>{ft[0], ft[1], ft[2]}, ft[3], g);  // line 16, eq. (4)
       const Index v[4] = {F.v[k], F.v[j], F.v[i], o.s};
       if (flags.gradient) {
@@ -328,6 +332,5 @@ void Kernels<double>::faces(const Mesh&, const Pattern&, std::size_t, std::size_
 template <>
 void Kernels<double>::assembly(const Mesh&, const Pattern&, const std::array<double, 4>*, const double*, const double*,
                                AssemblyRange, AssemblyFlags, double*, double*);
-
 
 }  // namespace hinge::fast::detail

@@ -1,12 +1,12 @@
-// hinge::fast's per-hinge kernel in a run-time scalar type, rounded to double (hinge/fast/rounded.hpp). The templates are
-// instantiated elsewhere (instantiate_*.cpp); this unit only converts.
+// hinge::fast's per-hinge kernel in a run-time scalar type, rounded to double (hinge/fast/rounded.hpp). The templates
+// are instantiated elsewhere (instantiate_*.cpp); this unit only converts.
 #include "hinge/fast/rounded.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/fast/hinge_kernel.hpp"
 
 namespace hinge::fast {
 namespace {

@@ -12,7 +12,6 @@
 
 namespace hinge::fast::detail {
 
-
 // A team of worker threads that stays for many parallel regions: run(threads, body) calls body(t) for
 // t = 0 .. threads - 1, t = 0 on the caller's thread, the others on workers (created on first need and
 // kept), and returns when all have returned. Between regions a worker spins briefly (the next pass or
@@ -33,8 +32,9 @@ class Team {
       return;
     }
     using Body = std::remove_reference_t<F>;
-    dispatch(threads, [](void* b, int t) noexcept { (*static_cast<Body*>(b))(t); },
-             const_cast<void*>(static_cast<const void*>(std::addressof(body))));
+    dispatch(
+        threads, [](void* b, int t) noexcept { (*static_cast<Body*>(b))(t); },
+        const_cast<void*>(static_cast<const void*>(std::addressof(body))));
   }
   int workers() const { return static_cast<int>(workers_.size()); }
 
@@ -58,7 +58,8 @@ template <class F>
 void for_chunks(Team& team, std::size_t count, std::size_t chunk, int threads, F&& body) {
   const std::size_t chunks = (count + chunk - 1) / chunk;
   std::atomic<std::size_t> next{0};
-  team.run(static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), std::max<std::size_t>(chunks, 1))),
+  team.run(static_cast<int>(
+               std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), std::max<std::size_t>(chunks, 1))),
            [&](int) {
              for (std::size_t c; (c = next.fetch_add(1, std::memory_order_relaxed)) < chunks;)
                body(c * chunk, std::min(count, (c + 1) * chunk), c);

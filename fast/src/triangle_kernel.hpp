@@ -61,15 +61,15 @@ using Columns3 = std::array<Column<Scalar>, 3>;
 // (computed once per face before the edge loop, since theta needs them: Algorithm 2, line 4).
 template <class Scalar>
 struct TriangleGeometry {
-  std::array<Vec3<Scalar>, 3> e;   // e_i
-  std::array<Scalar, 3> L;         // l_i^2
-  std::array<Scalar, 3> inv_l;     // 1 / l_i                                     (line 2)
-  std::array<Scalar, 3> G;         // e_{i+1} . e_{i+2}
-  std::array<Scalar, 3> cos_alpha; // -ê_{i+1} . ê_{i+2}                           (line 9, erratum)
-  std::array<Scalar, 3> inv_h;     // 1 / h_i = l_i / 2A                           (line 10)
-  std::array<Vec3<Scalar>, 3> m;   // ê_i x n                                      (line 11)
+  std::array<Vec3<Scalar>, 3> e;    // e_i
+  std::array<Scalar, 3> L;          // l_i^2
+  std::array<Scalar, 3> inv_l;      // 1 / l_i                                     (line 2)
+  std::array<Scalar, 3> G;          // e_{i+1} . e_{i+2}
+  std::array<Scalar, 3> cos_alpha;  // -ê_{i+1} . ê_{i+2}                           (line 9, erratum)
+  std::array<Scalar, 3> inv_h;      // 1 / h_i = l_i / 2A                           (line 10)
+  std::array<Vec3<Scalar>, 3> m;    // ê_i x n                                      (line 11)
   Vec3<Scalar> n;
-  Scalar inv_double_area;          // 1 / 2A                                       (line 8)
+  Scalar inv_double_area;  // 1 / 2A                                       (line 8)
 };
 
 // The next and the previous local index mod 3, without a division (for an edge k known only at run
@@ -126,7 +126,7 @@ HINGE_FAST_INLINE void triangle_hessian(const TriangleGeometry<Scalar>& t, const
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     d[i] = c[k] * t.cos_alpha[j] + c[j] * t.cos_alpha[k] - c[i];  // eq. (7), d_i
-    rc[i] = c[i] * (t.inv_l[i] * t.inv_l[i]);                       // R_i = rc_i M_i
+    rc[i] = c[i] * (t.inv_l[i] * t.inv_l[i]);                     // R_i = rc_i M_i
   }
   const Column<Scalar> n = column(t.n);
   const std::array<Column<Scalar>, 3> m{column(t.m[0]), column(t.m[1]), column(t.m[2])};
@@ -143,11 +143,11 @@ HINGE_FAST_INLINE void triangle_hessian(const TriangleGeometry<Scalar>& t, const
       diag[i][s] = w_ii * (m[i] * t.n[s] + n * t.m[i][s]) - rc[j] * (n * t.m[j][s]) - rc[k] * (n * t.m[k][s]);
       // H^D_{i,i+1} = omega_{i,i+1} (d_i M_{i+1}^T + d_{i+1} M_i) + R_{i+2}^dagger, or its transpose
       if (!mirrored)
-        off[i][s] = wd_i * (m[j] * t.n[s]) + wd_j * (n * t.m[i][s]) +
-                    rc[k] * (transpose ? m[k] * t.n[s] : n * t.m[k][s]);
+        off[i][s] =
+            wd_i * (m[j] * t.n[s]) + wd_j * (n * t.m[i][s]) + rc[k] * (transpose ? m[k] * t.n[s] : n * t.m[k][s]);
       else
-        off[i][s] = wd_i * (n * t.m[j][s]) + wd_j * (m[i] * t.n[s]) +
-                    rc[k] * (transpose ? n * t.m[k][s] : m[k] * t.n[s]);
+        off[i][s] =
+            wd_i * (n * t.m[j][s]) + wd_j * (m[i] * t.n[s]) + rc[k] * (transpose ? n * t.m[k][s] : m[k] * t.n[s]);
     }
   }
 }
@@ -164,15 +164,17 @@ HINGE_FAST_INLINE void hinge_gradient(const TriangleGeometry<Scalar>& t, int k, 
   // Each coefficient is (a dot product with e_k) / l_k, then / 2A: the intermediates scale like lengths,
   // never 1 / (l_k 2A) (which overflows for a short edge or a small triangle whose 1 / h does not).
   const Scalar il = t.inv_l[k], lk = t.L[k] * il;  // 1 / l_k, l_k
-  const Scalar gp = -t.inv_h[k];                    // l_k / 2A
-  const Scalar gq = -((t.G[i] * il) * t.inv_double_area), gr = -((t.G[j] * il) * t.inv_double_area);  // G_i = e_k . e_{k+1}, G_j = e_k . e_{k+2}
-  const Scalar tq = (vdot(ek, vsub(xr, xs)) * il) * inv_double_area_t, tr = (vdot(ek, vsub(xs, xq)) * il) * inv_double_area_t;
+  const Scalar gp = -t.inv_h[k];                   // l_k / 2A
+  const Scalar gq = -((t.G[i] * il) * t.inv_double_area),
+               gr = -((t.G[j] * il) * t.inv_double_area);  // G_i = e_k . e_{k+1}, G_j = e_k . e_{k+2}
+  const Scalar tq = (vdot(ek, vsub(xr, xs)) * il) * inv_double_area_t,
+               tr = (vdot(ek, vsub(xs, xq)) * il) * inv_double_area_t;
   const Scalar ts = -(lk * inv_double_area_t);
   for (int c = 0; c < 3; ++c) {
-    g[0][c] = gp * t.n[c];                  // p
-    g[1][c] = gq * t.n[c] + tq * nt[c];     // q
-    g[2][c] = gr * t.n[c] + tr * nt[c];     // r
-    g[3][c] = ts * nt[c];                   // s
+    g[0][c] = gp * t.n[c];               // p
+    g[1][c] = gq * t.n[c] + tq * nt[c];  // q
+    g[2][c] = gr * t.n[c] + tr * nt[c];  // r
+    g[3][c] = ts * nt[c];                // s
   }
 }
 

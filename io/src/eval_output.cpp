@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "hinge/io/jsonl.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/io/jsonl.hpp"
 
 namespace hinge::io {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <string_view>
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "hinge/io/number.hpp"
 
@@ -136,7 +136,8 @@ std::string error_line(const std::string& id_json, const std::string& error) {
 }
 
 std::string invalid_line(const HingeLine& line) {
-  return "{\"id\": " + line.id_json + ", \"line\": " + std::to_string(line.line) + ", \"error\": " + json_string(line.error) + "}";
+  return "{\"id\": " + line.id_json + ", \"line\": " + std::to_string(line.line) +
+         ", \"error\": " + json_string(line.error) + "}";
 }
 
 }  // namespace hinge::io

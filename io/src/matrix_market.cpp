@@ -10,8 +10,8 @@
 #include <sstream>
 #include <vector>
 
-#include "hinge/io/number.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/io/number.hpp"
 
 namespace hinge::io {
 
@@ -37,7 +37,8 @@ Eigen::SparseMatrix<double> read_matrix_market(std::istream& in, const std::stri
   std::string header;
   std::getline(in, header);
   std::string lower = header;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   if (lower.rfind("%%matrixmarket matrix coordinate real", 0) != 0)
     throw InputError(name + ": expected %%MatrixMarket matrix coordinate real symmetric|general");
   const bool symmetric = lower.find("symmetric") != std::string::npos;

@@ -24,8 +24,8 @@
 #include <utility>
 #include <vector>
 
-#include "hinge/io/number.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/io/number.hpp"
 
 namespace hinge::io {
 namespace {
@@ -69,7 +69,9 @@ class Parser {
   Mesh finish() {
     if (mesh_.faces.empty())  // docs/contract.md (version 2): a mesh with no faces is an error
       throw InputError(name_ + ": the mesh has no faces (" +
-                       (mesh_.vertices.empty() ? std::string("the file has no v or f lines") : std::to_string(mesh_.vertices.size()) + " vertices, no f lines") + ")");
+                       (mesh_.vertices.empty() ? std::string("the file has no v or f lines")
+                                               : std::to_string(mesh_.vertices.size()) + " vertices, no f lines") +
+                       ")");
     const std::size_t n = mesh_.vertices.size();
     for (std::size_t f = 0; f < mesh_.faces.size(); ++f) {
       for (const Index v : mesh_.faces[f]) {
@@ -114,8 +116,7 @@ class Parser {
     double x = 0.0;
     const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), x, std::chars_format::general);
     if (ec == std::errc::result_out_of_range) {
-      fail("coordinate '" + std::string(token) +
-           "' is outside the range of double (overflow, or underflow to zero)");
+      fail("coordinate '" + std::string(token) + "' is outside the range of double (overflow, or underflow to zero)");
     }
     if (ec != std::errc{} || ptr != s.data() + s.size()) {
       fail("malformed coordinate '" + std::string(token) + "'");
@@ -134,8 +135,7 @@ class Parser {
   void face(const std::vector<std::string_view>& tokens) {
     const std::size_t corners = tokens.size() - 1;
     if (corners != 3) {
-      fail("face with " + std::to_string(corners) +
-           " vertices; only triangles are accepted (no triangulation)");
+      fail("face with " + std::to_string(corners) + " vertices; only triangles are accepted (no triangulation)");
     }
     std::array<Index, 3> f{};
     for (std::size_t k = 0; k < 3; ++k) {
@@ -151,8 +151,7 @@ class Parser {
         if (slash2 == std::string_view::npos) {
           ok = integer(t, ignored);  // a/t
         } else {
-          ok = (t.empty() || integer(t, ignored)) &&
-               integer(token.substr(slash2 + 1), ignored);  // a//n, a/t/n
+          ok = (t.empty() || integer(t, ignored)) && integer(token.substr(slash2 + 1), ignored);  // a//n, a/t/n
         }
       }
       if (!ok) fail("malformed face vertex '" + std::string(token) + "' (expected a, a/t, a//n or a/t/n)");

@@ -27,7 +27,8 @@ using json = nlohmann::json;
 // key left over. Messages: "FILE: KEY: why".
 class Object {
  public:
-  Object(const std::string& file, const json& value, std::string path) : file_(file), value_(value), path_(std::move(path)) {
+  Object(const std::string& file, const json& value, std::string path)
+      : file_(file), value_(value), path_(std::move(path)) {
     if (!value_.is_object()) fail(path_.empty() ? "the scene must be a JSON object" : "expected an object");
   }
 
@@ -126,7 +127,8 @@ class Object {
       if (j < 0 || static_cast<std::size_t>(j) >= vertex_count)
         fail_at(key_path(at), "vertex " + std::to_string(j) + " out of range (the mesh has " +
                                   std::to_string(vertex_count) + " vertices, numbered from 0)");
-      if (!seen.insert(static_cast<Index>(j)).second) fail_at(key_path(at), "vertex " + std::to_string(j) + " listed twice");
+      if (!seen.insert(static_cast<Index>(j)).second)
+        fail_at(key_path(at), "vertex " + std::to_string(j) + " listed twice");
       out.push_back(static_cast<Index>(j));
     }
     return out;
@@ -270,13 +272,13 @@ Scene read_scene(const std::string& path) {
     }
     if (solve.has("hessian")) {
       const std::string h = solve.choice("hessian", {"exact", "projected", "gauss-newton"});
-      s.solve.hessian = h == "exact" ? HessianTreatment::exact
+      s.solve.hessian = h == "exact"       ? HessianTreatment::exact
                         : h == "projected" ? HessianTreatment::projected
                                            : HessianTreatment::gauss_newton;
     }
     if (solve.has("linear_solver"))
-      s.solve.linear_solver = solve.choice("linear_solver", {"cholmod", "ldlt"}) == "cholmod" ? LinearSolver::cholmod
-                                                                                             : LinearSolver::ldlt;
+      s.solve.linear_solver =
+          solve.choice("linear_solver", {"cholmod", "ldlt"}) == "cholmod" ? LinearSolver::cholmod : LinearSolver::ldlt;
     solve.done();
   }
 
@@ -306,7 +308,8 @@ Scene read_scene(const std::string& path) {
       if (e.has("k")) {
         b.k = e.checked_number("k", check_k);
       } else {
-        if (!(s.material.young > 0)) fx.fail_at("material.young", "required by effects.bending without \"k\" (eq. (11))");
+        if (!(s.material.young > 0))
+          fx.fail_at("material.young", "required by effects.bending without \"k\" (eq. (11))");
         b.k = e.checked([&] {
           return stiffness_from_material({s.material.young, "material.young"}, {s.material.poisson, "material.poisson"},
                                          {s.material.thickness, "material.thickness"});
@@ -332,11 +335,14 @@ Scene read_scene(const std::string& path) {
       }
       e.done();
       if (!(d.mass > 0 || d.bending > 0)) fx.fail_at("effects.damping", "needs \"mass\" or \"bending\" above 0");
-      if (s.solve.mode != Mode::dynamic) fx.fail_at("effects.damping", "only with \"mode\": \"dynamic\" (a static solve has no velocity)");
+      if (s.solve.mode != Mode::dynamic)
+        fx.fail_at("effects.damping", "only with \"mode\": \"dynamic\" (a static solve has no velocity)");
       if (d.bending > 0) {
         if (!s.bending || s.bending->energy != Model::tan)
-          fx.fail_at("effects.damping.bending", "needs effects.bending with \"energy\": \"tan\" (the paper's section 5 is written for it)");
-        if (s.solve.hessian == HessianTreatment::exact && (s.bending->method != Method::fast || s.bending->scalar.kind != ScalarType::Kind::kind_double))
+          fx.fail_at("effects.damping.bending",
+                     "needs effects.bending with \"energy\": \"tan\" (the paper's section 5 is written for it)");
+        if (s.solve.hessian == HessianTreatment::exact &&
+            (s.bending->method != Method::fast || s.bending->scalar.kind != ScalarType::Kind::kind_double))
           fx.fail_at("effects.damping.bending", "with \"hessian\": \"exact\" needs the bending method fast in double");
       }
       s.damping = d;

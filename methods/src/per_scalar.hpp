@@ -7,8 +7,8 @@
 #include <array>
 #include <memory>
 
-#include "hinge/methods/methods.hpp"
 #include "hinge/core/results.hpp"
+#include "hinge/methods/methods.hpp"
 
 namespace hinge::methods::detail {
 
@@ -24,8 +24,8 @@ struct EvaluatorImpl {
 template <HingeScalar Scalar>
 std::unique_ptr<EvaluatorImpl> make_evaluator(Method method, const MeshInput& input);
 
-#define HINGE_METHODS_PER_SCALAR_EXTERN(S)                                                                \
-  extern template RoundedTheta baseline_hinge<S>(Method, const std::array<double, 12>&);        \
+#define HINGE_METHODS_PER_SCALAR_EXTERN(S)                                               \
+  extern template RoundedTheta baseline_hinge<S>(Method, const std::array<double, 12>&); \
   extern template std::unique_ptr<EvaluatorImpl> make_evaluator<S>(Method, const MeshInput&);
 HINGE_FOR_EACH_SCALAR(HINGE_METHODS_PER_SCALAR_EXTERN)
 #undef HINGE_METHODS_PER_SCALAR_EXTERN

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "hinge/baselines/derivatives.hpp"
+#include "hinge/core/rounding.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/reference/assemble_impl.hpp"
-#include "hinge/core/rounding.hpp"
 #include "per_scalar.hpp"
 
 namespace hinge::methods::detail {
@@ -115,8 +115,8 @@ std::unique_ptr<EvaluatorImpl> make_evaluator(Method method, const MeshInput& in
 
 }  // namespace hinge::methods::detail
 
-#define HINGE_METHODS_PER_SCALAR_INSTANTIATE(S)                                                               \
-  template hinge::RoundedTheta hinge::methods::detail::baseline_hinge<S>(hinge::methods::Method,   \
-                                                                                    const std::array<double, 12>&); \
-  template std::unique_ptr<hinge::methods::detail::EvaluatorImpl> hinge::methods::detail::make_evaluator<S>(  \
+#define HINGE_METHODS_PER_SCALAR_INSTANTIATE(S)                                                              \
+  template hinge::RoundedTheta hinge::methods::detail::baseline_hinge<S>(hinge::methods::Method,             \
+                                                                         const std::array<double, 12>&);     \
+  template std::unique_ptr<hinge::methods::detail::EvaluatorImpl> hinge::methods::detail::make_evaluator<S>( \
       hinge::methods::Method, const hinge::methods::MeshInput&);

@@ -14,9 +14,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "hinge/oracle/oracle.hpp"
-#include "hinge/core/errors.hpp"
 #include "fast_path.hpp"
+#include "hinge/core/errors.hpp"
+#include "hinge/oracle/oracle.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"
 
@@ -128,8 +128,8 @@ using detail::Verdict;
 // v and m of one sign, |v| <> |m| is  num^2 2^(2 shift) <> m^2 den^2 s  in integers. Returns false when
 // a and b are not adjacent (the enclosure is still too wide). The pair (DBL_MAX, inf) is adjacent too:
 // its boundary 2^1024 - 2^970 is where rounding overflows; `overflow` is set above it.
-bool exact_round(const Int& num, const Int& den, const Int& s, long shift, double a, double b, double& out,
-                 bool& tie, bool& overflow) {
+bool exact_round(const Int& num, const Int& den, const Int& s, long shift, double a, double b, double& out, bool& tie,
+                 bool& overflow) {
   constexpr double largest = std::numeric_limits<double>::max();
   Real m(64);
   if (std::isfinite(a) && std::isfinite(b) && std::nextafter(a, HUGE_VAL) == b) {

@@ -49,7 +49,8 @@ double third_derivative_scale(const ScaledHinge& s, const Int& longest_squared, 
     const ExactHinge ep = exact_hinge(plus, true), em = exact_hinge(minus, true);
     const Interval lp = sqrt(Interval(ep.s)), lm = sqrt(Interval(em.s));
     for (int k = 0; k < 144; ++k) {
-      const Interval d = detail::quotient(ep.h[k], ep.h_den, lp, 2 * ep.F) - detail::quotient(em.h[k], em.h_den, lm, 2 * em.F);
+      const Interval d =
+          detail::quotient(ep.h[k], ep.h_den, lp, 2 * ep.F) - detail::quotient(em.h[k], em.h_den, lm, 2 * em.F);
       mpfi_mid(term.get(), d.get());
       mpfr_mul_2si(term.get(), term.get(), refined.F - 1, MPFR_RNDN);  // / (2 step), step = 2^-F
       mpfr_sqr(term.get(), term.get(), MPFR_RNDN);
@@ -83,7 +84,7 @@ ConditionedTheta certified_with_conditioning(const std::array<double, 12>& x) {
   Int longest_squared;
   Conditioning& k = e.conditioning;
   k.length = longest_edge(s, longest_squared);
-  k.scale[0] = k.length * scaled_norm(e.values.grad.data(), 12);  // J_theta = grad theta
+  k.scale[0] = k.length * scaled_norm(e.values.grad.data(), 12);   // J_theta = grad theta
   k.scale[1] = k.length * scaled_norm(e.values.hess.data(), 144);  // J_grad = Hess theta
   k.scale[2] = third_derivative_scale(s, longest_squared, k.length);
   const double sizes[3] = {scaled_norm(&e.values.theta, 1), scaled_norm(e.values.grad.data(), 12),

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <string>
 
+#include "exact_form.hpp"
 #include "hinge/core/errors.hpp"
 #include "hinge/core/hinge_checks.hpp"
-#include "exact_form.hpp"
 
 namespace hinge::oracle {
 namespace {

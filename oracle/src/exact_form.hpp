@@ -31,10 +31,10 @@ struct Edges {
 // Hess theta = h / (h_den sqrt(s)) (in the units of the edges).
 template <class T>
 struct Form {
-  T s;                   // e0 . e0
-  T nn, tt;              // N . N, Nt . Nt: (2A)^2 of the upper and lower triangle
-  T X, Y;                // N . Nt and (N x Nt) . e0
-  std::array<T, 12> g;   // eq. (4) over g_den = nn tt
+  T s;                  // e0 . e0
+  T nn, tt;             // N . N, Nt . Nt: (2A)^2 of the upper and lower triangle
+  T X, Y;               // N . Nt and (N x Nt) . e0
+  std::array<T, 12> g;  // eq. (4) over g_den = nn tt
   T g_den;
   std::array<T, 144> h;  // eqs. (5)-(6) over h_den = 2 nn^2 tt^2 s, row-major
   T h_den;
@@ -121,8 +121,8 @@ void fill_form(const Edges<T>& e, const V3<T>& N, const V3<T>& Nt, Form<T>& r, b
   const T& tt = r.tt;
   r.s = dot(e.e0, e.e0);
   const T& s = r.s;
-  r.X = dot(N, Nt);                // |N| |Nt| cos(theta)
-  r.Y = dot(cross(N, Nt), e.e0);   // |N| |Nt| |e0| sin(theta): the sign of theta (docs/contract.md)
+  r.X = dot(N, Nt);               // |N| |Nt| cos(theta)
+  r.Y = dot(cross(N, Nt), e.e0);  // |N| |Nt| |e0| sin(theta): the sign of theta (docs/contract.md)
 
   // d_i = e0 . e_i: l_i cos(alpha_{3-i}) = -d_i / l0 (upper), the same with e~_i (lower).
   const T d1 = dot(e.e0, e.e1), d2 = dot(e.e0, e.e2), dt1 = dot(e.e0, e.et1), dt2 = dot(e.e0, e.et2);

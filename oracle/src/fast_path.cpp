@@ -238,7 +238,8 @@ std::optional<BoundedHinge> bounded_hinge(const std::array<double, 12>& x, bool 
   if (!with_derivatives) return b;
   for (int k = 0; k < 12; ++k) b.grad[k] = scaled(f.g[k] * v->g_inverse, -v->E);
   for (int p = 0; p < 12; ++p)  // the upper triangle, and its mirror (h is exactly symmetric)
-    for (int q = p; q < 12; ++q) b.hess[12 * q + p] = b.hess[12 * p + q] = scaled(f.h[12 * p + q] * v->h_inverse, -2 * v->E);
+    for (int q = p; q < 12; ++q)
+      b.hess[12 * q + p] = b.hess[12 * p + q] = scaled(f.h[12 * p + q] * v->h_inverse, -2 * v->E);
   return b;
 }
 

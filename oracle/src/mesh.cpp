@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "hinge/core/hinge_checks.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/core/hinge_checks.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"
 #include "mesh_fast_path.hpp"
@@ -45,7 +45,8 @@ PsiEnclosure psi(Model model, const Interval& k, const Interval& kd, const Inter
       const Interval elastic = equal ? Interval::zero() : 2 * t - 2 * rest.tan_half;
       const Interval stiffness = model == Model::viscoelastic ? k + kd : k;  // phi_hat = phi_bar
       const Interval force = stiffness * elastic;
-      return {stiffness * a * elastic * elastic, 2 * a * force * dphi, 2 * a * (stiffness * dphi * dphi + force * d2phi)};
+      return {stiffness * a * elastic * elastic, 2 * a * force * dphi,
+              2 * a * (stiffness * dphi * dphi + force * d2phi)};
     }
     case Model::willmore: {  // psi = k a sin^2(theta / 2)
       const Interval ka = k * a;
@@ -82,7 +83,8 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
   check_same_mesh(deformed, topology, "deformed");
   check_same_mesh(rest, topology, "rest");
   if (options.fast_path)
-    if (std::optional<CertifiedMesh> fast = detail::fast_mesh(deformed, rest, topology, parameters, request)) return *fast;
+    if (std::optional<CertifiedMesh> fast = detail::fast_mesh(deformed, rest, topology, parameters, request))
+      return *fast;
   const bool want_grad = request & want_gradient, want_hess = request & want_hessian;
   const Model model = parameters.model;
   const auto hinge_count = static_cast<Index>(topology.hinges.size());
@@ -158,11 +160,13 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
             Interval& v = H[12 * row + col];
             v = Interval::zero();
             if (sgn(num) != 0 && !p.d1.is_exact_zero()) v = p.d1 * scale2(Interval(num) / h_scale, 2 * e.F);
-            if (!g[row].is_exact_zero() && !g[col].is_exact_zero() && !p.d2.is_exact_zero()) v += p.d2 * g[row] * g[col];
+            if (!g[row].is_exact_zero() && !g[col].is_exact_zero() && !p.d2.is_exact_zero())
+              v += p.d2 * g[row] * g[col];
             squares += square(midpoint(v));
           }
         out.hessian_contributions += std::sqrt(squares);
-        detail::scatter_hessian(hinge, [&H](int row, int col) { return H[12 * row + col]; }, hessian);
+        detail::scatter_hessian(
+            hinge, [&H](int row, int col) { return H[12 * row + col]; }, hessian);
       });
     }
 

@@ -9,14 +9,13 @@
 #include <utility>
 
 #include "fast_path.hpp"
-#include "hinge/oracle/exact.hpp"
 #include "hinge/core/hinge_checks.hpp"
+#include "hinge/oracle/exact.hpp"
 #include "hinge_intervals.hpp"
 #include "mesh_scatter.hpp"
 
 namespace hinge::oracle::detail {
 namespace {
-
 
 struct PsiBounded {
   Bounded value, d1, d2;  // psi, psi', psi''

@@ -25,7 +25,8 @@ void scatter_hessian(const Hinge& hinge, Local local, std::map<std::pair<Eigen::
       for (int rr = 0; rr < 3; ++rr)
         for (int cc = 0; cc < 3; ++cc) {
           B[3 * rr + cc] = local(3 * a4 + rr, 3 * b4 + cc);
-          if (a4 != b4 && va == vb) B[3 * rr + cc] = B[3 * rr + cc] + local(3 * b4 + rr, 3 * a4 + cc);  // one global vertex
+          if (a4 != b4 && va == vb)
+            B[3 * rr + cc] = B[3 * rr + cc] + local(3 * b4 + rr, 3 * a4 + cc);  // one global vertex
         }
       const bool flip = va > vb;
       const Index row = flip ? vb : va, col = flip ? va : vb;

@@ -15,14 +15,14 @@
 #include <thread>
 #include <vector>
 
-#include "hinge/io/jsonl.hpp"
-#include "hinge/fast/faithful.hpp"
-#include "hinge/methods/methods.hpp"
-#include "hinge/oracle/oracle.hpp"
 #include "hinge/conformance/certified_line.hpp"
 #include "hinge/core/bending_problem.hpp"
 #include "hinge/core/errors.hpp"
 #include "hinge/core/mesh.hpp"
+#include "hinge/fast/faithful.hpp"
+#include "hinge/io/jsonl.hpp"
+#include "hinge/methods/methods.hpp"
+#include "hinge/oracle/oracle.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -112,13 +112,15 @@ auto parsed(F&& f) {
 // pybind11's TypeError.
 std::string as_name(const py::object& o, const char* what) {
   if (!py::isinstance<py::str>(o))
-    throw py::value_error(std::string(what) + " must be a string; got " + std::string(py::str(py::type::of(o).attr("__name__"))));
+    throw py::value_error(std::string(what) + " must be a string; got " +
+                          std::string(py::str(py::type::of(o).attr("__name__"))));
   return o.cast<std::string>();
 }
 double as_number(const py::object& o, const char* what) {
-  if (py::isinstance<py::bool_>(o) || !(py::isinstance<py::float_>(o) || py::isinstance<py::int_>(o) ||
-                                        py::hasattr(o, "__float__")))
-    throw py::value_error(std::string(what) + " must be a number; got " + std::string(py::str(py::type::of(o).attr("__name__"))));
+  if (py::isinstance<py::bool_>(o) ||
+      !(py::isinstance<py::float_>(o) || py::isinstance<py::int_>(o) || py::hasattr(o, "__float__")))
+    throw py::value_error(std::string(what) + " must be a number; got " +
+                          std::string(py::str(py::type::of(o).attr("__name__"))));
   try {
     return py::float_(o).cast<double>();
   } catch (py::error_already_set& e) {
@@ -128,11 +130,13 @@ double as_number(const py::object& o, const char* what) {
 // An integer argument (its range is checked by the caller); a ValueError naming it for any other type.
 long long as_integer(const py::object& o, const char* what) {
   if (py::isinstance<py::bool_>(o) || !py::hasattr(o, "__index__"))
-    throw py::value_error(std::string(what) + " must be an integer; got " + std::string(py::str(py::type::of(o).attr("__name__"))));
+    throw py::value_error(std::string(what) + " must be an integer; got " +
+                          std::string(py::str(py::type::of(o).attr("__name__"))));
   const py::int_ value(o);
   const py::int_ largest(std::numeric_limits<long long>::max()), smallest(std::numeric_limits<long long>::min());
-  return value > largest ? std::numeric_limits<long long>::max() : value < smallest ? std::numeric_limits<long long>::min()
-                                                                                    : value.cast<long long>();
+  return value > largest    ? std::numeric_limits<long long>::max()
+         : value < smallest ? std::numeric_limits<long long>::min()
+                            : value.cast<long long>();
 }
 hinge::methods::Method as_method(const py::object& o) {
   return parsed([&] { return hinge::methods::parse_method(as_name(o, "method")); });
@@ -158,7 +162,8 @@ Result eval(const py::object& x, const py::object& method_name, const py::object
   std::unique_lock<std::mutex> lock;
   return run_hinges(x, [&](std::size_t i, const std::array<double, 12>& xi, double* t, double* g, double* h) {
     if (i == 0) lock = lock_if_mpfr(scalar);  // without the GIL (run_hinges released it)
-    store(faithful ? hinge::fast::faithful_derivatives_rounded(xi) : hinge::methods::evaluate_hinge(method, scalar, xi), t, g, h);
+    store(faithful ? hinge::fast::faithful_derivatives_rounded(xi) : hinge::methods::evaluate_hinge(method, scalar, xi),
+          t, g, h);
   });
 }
 
@@ -189,7 +194,8 @@ std::vector<std::array<hinge::Index, 3>> as_faces(const py::object& faces, std::
   if (f.shape(0) == 0) throw py::value_error("faces is empty: a mesh needs at least one face");
   const std::string kind = py::str(f.dtype().attr("kind"));
   if (kind != "i" && kind != "u")
-    throw py::value_error("faces must hold integers (0-based vertex indices); got dtype " + std::string(py::str(f.dtype())));
+    throw py::value_error("faces must hold integers (0-based vertex indices); got dtype " +
+                          std::string(py::str(f.dtype())));
   const std::string type = kind == "u" ? "uint64" : "int64";
   const py::array wide = py::module_::import("numpy").attr("ascontiguousarray")(f, "dtype"_a = type);
   std::vector<std::array<hinge::Index, 3>> out(static_cast<std::size_t>(f.shape(0)));
@@ -244,8 +250,9 @@ py::tuple hessian(const py::object& vertices, const py::object& faces_object, co
   const auto scalar = as_scalar(scalar_name);
   const double k = as_number(k_object, "k");
   const std::string energy_name = as_name(energy, "energy");
-  const hinge::EnergyParameters parameters =
-      parsed([&] { return hinge::bending_problem({k, "k="}, energy_name, "energy=").parameters(); });
+  const hinge::EnergyParameters parameters = parsed([&] {
+    return hinge::bending_problem({k, "k="}, energy_name, "energy=").parameters();
+  });
   const long long requested_threads = as_integer(threads_object, "threads");
   const int threads = parsed([&] { return hinge::resolve_threads(requested_threads, "threads="); });
   hinge::Mesh deformed;
@@ -267,7 +274,8 @@ py::tuple hessian(const py::object& vertices, const py::object& faces_object, co
     const hinge::Topology topology = hinge::build_topology(deformed);
     hinge::check_bending_mesh(topology, deformed, rest ? &*rest : nullptr,
                               {"", "rest=", "allow_no_hinges=True", allow_no_hinges});
-    hinge::methods::MeshInput input{&deformed, rest ? &*rest : &deformed, &topology, parameters, hinge::want_all, threads};
+    hinge::methods::MeshInput input{&deformed,  rest ? &*rest : &deformed, &topology,
+                                    parameters, hinge::want_all,           threads};
     result = hinge::methods::evaluate_mesh(method, scalar, input);
   } catch (const hinge::InputError& e) {
     throw py::value_error(e.what());
@@ -286,9 +294,11 @@ py::tuple hessian(const py::object& vertices, const py::object& faces_object, co
       if (it.row() != it.col()) rows.push_back(it.col()), cols.push_back(it.row()), data.push_back(it.value());
     }
   const auto size = static_cast<std::int64_t>(3 * deformed.vertices.size());
-  py::object csr = py::module_::import("scipy.sparse").attr("csr_matrix")(
-      py::make_tuple(py::array(py::cast(data)), py::make_tuple(py::array(py::cast(rows)), py::array(py::cast(cols)))),
-      "shape"_a = py::make_tuple(size, size));
+  py::object csr =
+      py::module_::import("scipy.sparse")
+          .attr("csr_matrix")(py::make_tuple(py::array(py::cast(data)),
+                                             py::make_tuple(py::array(py::cast(rows)), py::array(py::cast(cols)))),
+                              "shape"_a = py::make_tuple(size, size));
   return py::make_tuple(result.energy, py::array(py::cast(result.gradient)), csr);
 }
 
@@ -334,7 +344,8 @@ py::tuple stream(const std::string& command, const py::bytes& input, long first_
 
 PYBIND11_MODULE(_hinge, m) {
   m.doc() = "The compiled part of the hinge module (docs/python.md); use the functions of `hinge`.";
-  py::class_<Result>(m, "Result", "theta (n,), grad (n, 12), hess (n, 12, 12) as float64, error: n entries, None or why")
+  py::class_<Result>(m, "Result",
+                     "theta (n,), grad (n, 12), hess (n, 12, 12) as float64, error: n entries, None or why")
       .def_readonly("theta", &Result::theta, "theta per hinge, in (-pi, pi] (NaN where error is not None)")
       .def_readonly("grad", &Result::grad, "grad theta per hinge, (n, 12): x0.x, x0.y, ..., x3.z")
       .def_readonly("hess", &Result::hess, "Hess theta per hinge, (n, 12, 12)")
@@ -342,13 +353,13 @@ PYBIND11_MODULE(_hinge, m) {
       .def_readonly("uncertified", &Result::uncertified,
                     "oracle only: per hinge None, or the outputs not certified within the precision cap")
       .def("__len__", [](const Result& r) { return r.theta.shape(0); })
-      .def("__repr__", [](const Result& r) { return "<hinge.Result of " + std::to_string(r.theta.shape(0)) + " hinges>"; });
+      .def("__repr__",
+           [](const Result& r) { return "<hinge.Result of " + std::to_string(r.theta.shape(0)) + " hinges>"; });
   const hinge::oracle::Options defaults;
   m.def("eval", &eval, "x"_a, "method"_a = "fast", "scalar"_a = "double", "faithful"_a = false);
   m.def("oracle", &oracle, "x"_a);
   m.def("hessian", &hessian, "vertices"_a, "faces"_a, "rest"_a = py::none(), "energy"_a = "tan", "k"_a = 1.0,
         "method"_a = "fast", "threads"_a = 0, "scalar"_a = "double", "allow_no_hinges"_a = false);
-  m.def("stream", &stream, "command"_a, "input"_a, "first_line"_a = 1, "method"_a = "reference",
-        "scalar"_a = "double", "report_precision"_a = false, "start_bits"_a = defaults.start_bits,
-        "max_bits"_a = defaults.max_bits);
+  m.def("stream", &stream, "command"_a, "input"_a, "first_line"_a = 1, "method"_a = "reference", "scalar"_a = "double",
+        "report_precision"_a = false, "start_bits"_a = defaults.start_bits, "max_bits"_a = defaults.max_bits);
 }

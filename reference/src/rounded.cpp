@@ -14,8 +14,8 @@ RoundedTheta theta_in(const std::array<double, 12>& x) {
 }
 
 template <class Scalar>
-RoundedMesh mesh_in(const Mesh& deformed, const Mesh& rest, const Topology& topology, const EnergyParameters& parameters,
-                    unsigned request) {
+RoundedMesh mesh_in(const Mesh& deformed, const Mesh& rest, const Topology& topology,
+                    const EnergyParameters& parameters, unsigned request) {
   const auto coefficients = rest_state<Scalar>(rest, topology, parameters);
   return round_mesh(assemble<Scalar>(deformed, topology, coefficients, parameters.model, request), request);
 }
@@ -28,7 +28,8 @@ RoundedTheta theta_derivatives_rounded(const ScalarType& type, const std::array<
 
 RoundedMesh assemble_rounded(const ScalarType& type, const Mesh& deformed, const Mesh& rest, const Topology& topology,
                              const EnergyParameters& parameters, unsigned request) {
-  return visit_scalar_type(type, [&]<class Scalar>() { return mesh_in<Scalar>(deformed, rest, topology, parameters, request); });
+  return visit_scalar_type(
+      type, [&]<class Scalar>() { return mesh_in<Scalar>(deformed, rest, topology, parameters, request); });
 }
 
 }  // namespace hinge::reference

@@ -13,10 +13,10 @@
 #include <map>
 
 #include "effects_internal.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/core/errors.hpp"
 
 namespace hinge::sim::detail {
 namespace {
@@ -26,12 +26,11 @@ using Mat12 = Eigen::Matrix<double, 12, 12>;
 class BendingEffect final : public Effect {
  public:
   BendingEffect(const Context& c, const Bending& b, const Damping* damping)
-      : topology_(*c.topology), sparsity_(*c.sparsity), treatment_(c.scene->solve.hessian),
-        method_(b.method), scalar_(b.scalar),
-        direct_(b.method == methods::Method::fast && b.scalar.kind == ScalarType::Kind::kind_double), threads_(c.threads),
-        assembler_(topology_), rest_(c.scene->rest), mesh_(c.scene->mesh), file_(c.scene->file) {
+      : topology_(*c.topology), sparsity_(*c.sparsity), treatment_(c.scene->solve.hessian), method_(b.method),
+        scalar_(b.scalar), direct_(b.method == methods::Method::fast && b.scalar.kind == ScalarType::Kind::kind_double),
+        threads_(c.threads), assembler_(topology_), rest_(c.scene->rest), mesh_(c.scene->mesh), file_(c.scene->file) {
     parameters_.model = b.energy;
-    parameters_.k = b.k;  // given, or eq. (11) from the material: the scene reader decided
+    parameters_.k = b.k;                    // given, or eq. (11) from the material: the scene reader decided
     if (damping && damping->bending > 0) {  // section 5: the viscoelastic model
       parameters_.model = Model::viscoelastic;
       parameters_.k_d_over_dt = damping->bending * parameters_.k / c.dt;
@@ -152,7 +151,8 @@ class BendingEffect final : public Effect {
       if (out.request & 1u) out.energy += p.value;
       const auto& x = topology_.hinges[i].x;
       if (out.request & 2u)
-        for (int v = 0; v < 4; ++v) out.gradient.segment<3>(3 * x[static_cast<std::size_t>(v)]) += p.d1 * d_.grad.segment<3>(3 * v);
+        for (int v = 0; v < 4; ++v)
+          out.gradient.segment<3>(3 * x[static_cast<std::size_t>(v)]) += p.d1 * d_.grad.segment<3>(3 * v);
       if (!hessian) continue;
       Mat12 h = std::max(p.d2, gauss_newton ? 0.0 : -INFINITY) * d_.grad * d_.grad.transpose();  // eq. (3)
       if (!gauss_newton) {

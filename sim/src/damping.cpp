@@ -11,8 +11,7 @@ class DampingEffect final : public Effect {
  public:
   DampingEffect(const Context& c, const Damping& d)
       : weight_(c.dt > 0 ? Eigen::VectorXd(d.mass / c.dt * c.mass) : Eigen::VectorXd::Zero(c.mass.size())),
-        start_(c.mass.size()),
-        diagonal_(diagonal_slots(*c.sparsity)) {}
+        start_(c.mass.size()), diagonal_(diagonal_slots(*c.sparsity)) {}
   std::string_view name() const override { return "damping"; }
   void begin_step(const Eigen::VectorXd& x, const Eigen::VectorXd&) override { start_ = x; }
   void add(const Eigen::VectorXd& x, Evaluation& out) override {

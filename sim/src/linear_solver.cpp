@@ -29,7 +29,8 @@ class EigenSolver final : public SparseSolver {
 
 std::unique_ptr<SparseSolver> make_sparse_solver(LinearSolver kind) {
   using Matrix = Eigen::SparseMatrix<double>;
-  if (kind == LinearSolver::cholmod) return std::make_unique<EigenSolver<Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Upper>>>();
+  if (kind == LinearSolver::cholmod)
+    return std::make_unique<EigenSolver<Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Upper>>>();
   return std::make_unique<EigenSolver<Eigen::SimplicialLDLT<Matrix, Eigen::Upper>>>();
 }
 

@@ -40,7 +40,8 @@ class Run {
       }
     for (std::size_t v = 0; v < n; ++v)
       if (!(context_.mass[static_cast<Eigen::Index>(3 * v)] > 0))
-        throw InputError(scene.file + ": mesh: vertex " + std::to_string(v) + " belongs to no face of non-zero area (no mass)");
+        throw InputError(scene.file + ": mesh: vertex " + std::to_string(v) +
+                         " belongs to no face of non-zero area (no mass)");
     effects_ = make_effects(context_);
     times_.assign(effects_.size(), 0.0);
     for (const auto& e : effects_) summary_.effects.emplace_back(e->name());
@@ -95,7 +96,8 @@ class Run {
     summary_.time_linear_solve = linear_time_;
     for (std::size_t i = 0; i < effects_.size(); ++i) {
       summary_.time_effects.emplace_back(effects_[i]->name(), times_[i]);
-      if (effects_[i]->name() == "bending" && summary_.time_total > 0) summary_.bending_share = times_[i] / summary_.time_total;
+      if (effects_[i]->name() == "bending" && summary_.time_total > 0)
+        summary_.bending_share = times_[i] / summary_.time_total;
     }
     return summary_;
   }
@@ -166,7 +168,8 @@ class Run {
       if (request & 1u) ev_.energy += 0.5 * d.dot(inertia->weight.cwiseProduct(d));
       if (request & 2u) ev_.gradient += inertia->weight.cwiseProduct(d);
       if (request & 4u)
-        for (Eigen::Index k = 0; k < x.size(); ++k) ev_.hessian[static_cast<std::size_t>(sparsity_.slot(k, k))] += inertia->weight[k];
+        for (Eigen::Index k = 0; k < x.size(); ++k)
+          ev_.hessian[static_cast<std::size_t>(sparsity_.slot(k, k))] += inertia->weight[k];
     }
     return ev_;
   }
@@ -220,7 +223,7 @@ class Run {
         x_ += alpha * dx;
         return;
       }
-      const double slope = gradient.dot(dx);  // < 0: a descent direction
+      const double slope = gradient.dot(dx);              // < 0: a descent direction
       const double allowance = 1e-13 * std::abs(energy);  // rounding of the energy's evaluation
       bool accepted = false;
       for (int halvings = 0; halvings < 60; ++halvings, alpha /= 2) {
@@ -231,12 +234,14 @@ class Run {
         }
       }
       if (!accepted)
-        throw Failure{"the line search found no decrease of the potential (Newton iteration " + std::to_string(iteration) + ")"};
+        throw Failure{"the line search found no decrease of the potential (Newton iteration " +
+                      std::to_string(iteration) + ")"};
       x_ = trial;
       if (!x_.allFinite()) throw Failure{"a non-finite coordinate"};
     }
-    throw Failure{"Newton did not converge in " + std::to_string(scene_.solve.max_newton) + " iterations" +
-                  (scene_.solve.mode == Mode::dynamic ? " at step " + std::to_string(summary_.steps + 1) : std::string())};
+    throw Failure{
+        "Newton did not converge in " + std::to_string(scene_.solve.max_newton) + " iterations" +
+        (scene_.solve.mode == Mode::dynamic ? " at step " + std::to_string(summary_.steps + 1) : std::string())};
   }
 
   // Solves H d = b (b = -gradient) for a descent direction: if the factorization fails or d is not a
@@ -251,7 +256,8 @@ class Run {
     }
     Eigen::VectorXd diagonal = A.diagonal();
     const double scale = diagonal.cwiseAbs().maxCoeff();
-    if (!(scale > 0)) throw Failure{"the Hessian of the free coordinates is zero on its diagonal (an unconstrained scene?)"};
+    if (!(scale > 0))
+      throw Failure{"the Hessian of the free coordinates is zero on its diagonal (an unconstrained scene?)"};
     double tau = last_shift_ / 4;  // the last iteration's shift, lowered: one factorization, usually
     if (tau < 1e-8 * scale) tau = 0;
     for (int attempt = 0; attempt < 40; ++attempt) {
@@ -292,7 +298,8 @@ Eigen::VectorXd lumped_mass(const Scene& scene) {
   for (const auto& f : scene.rest.faces) {
     auto X = [&](int i) { return Eigen::Vector3d(scene.rest.vertices[static_cast<std::size_t>(f[i])].data()); };
     const double area = (X(1) - X(0)).cross(X(2) - X(0)).norm() / 2;
-    for (int i = 0; i < 3; ++i) mass.segment<3>(3 * f[i]).array() += scene.material.density * scene.material.thickness * area / 3;
+    for (int i = 0; i < 3; ++i)
+      mass.segment<3>(3 * f[i]).array() += scene.material.density * scene.material.thickness * area / 3;
   }
   return mass;
 }

@@ -64,7 +64,7 @@ class SphereEffect final : public Effect {
       const double a = q.squaredNorm(), b = p.dot(q), c = p.squaredNorm() - radius_ * radius_;
       if (!(b < 0) || a == 0) continue;  // moving away from the centre, or not moving
       const double disc = b * b - a * c;
-      if (disc < 0) continue;  // the line misses the sphere
+      if (disc < 0) continue;                           // the line misses the sphere
       const double first = c / (-b + std::sqrt(disc));  // the nearer root of a t^2 + 2 b t + c
       alpha = std::min(alpha, 0.8 * first);
     }

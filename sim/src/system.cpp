@@ -15,7 +15,8 @@ Sparsity::Sparsity(const Topology& topology) {
     for (int i = 0; i < 3; ++i)
       for (int j = i + 1; j < 3; ++j) pairs.emplace_back(std::min(f[i], f[j]), std::max(f[i], f[j]));
   for (const auto& h : topology.hinges) pairs.emplace_back(std::min(h.x[0], h.x[3]), std::max(h.x[0], h.x[3]));
-  std::sort(pairs.begin(), pairs.end(), [](auto a, auto b) { return std::pair(a.second, a.first) < std::pair(b.second, b.first); });
+  std::sort(pairs.begin(), pairs.end(),
+            [](auto a, auto b) { return std::pair(a.second, a.first) < std::pair(b.second, b.first); });
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   // Per column c = 3 v + cv, the rows 3 u + cu of every pair (u, v) with u <= v, row <= col.
   std::vector<std::vector<Index>> below(static_cast<std::size_t>(n));  // vertices u <= v paired with v

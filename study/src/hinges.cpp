@@ -1,13 +1,13 @@
 // The study's hinges: built in, read from a file, sampled (hinge/study/study.hpp).
 #include <algorithm>
 #include <fstream>
-#include <numeric>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <random>
 
-#include "hinge/io/jsonl.hpp"
 #include "hinge/conformance/inputs.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/io/jsonl.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "hinge/study/study.hpp"
 
@@ -18,7 +18,8 @@ std::vector<StudyHinge> builtin_hinges(bool quick) {
   for (auto& c : conformance::inputs()) hinges.push_back({c.id, c.category, c.x});
   if (!quick) {
     int i = 0;
-    for (const auto& x : reference::well_shaped_hinges(2000, 7)) hinges.push_back({"well-shaped/random-" + std::to_string(i++), "well-shaped", x});
+    for (const auto& x : reference::well_shaped_hinges(2000, 7))
+      hinges.push_back({"well-shaped/random-" + std::to_string(i++), "well-shaped", x});
   }
   return hinges;
 }

@@ -76,5 +76,4 @@ SharedFit shared_fit(const std::vector<MeshRow>& mesh, ScalarType::Kind kind) {
   return f;
 }
 
-
 }  // namespace hinge::study::detail

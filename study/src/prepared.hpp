@@ -25,8 +25,8 @@ class Prepared {
   std::vector<oracle::CertifiedTheta> certified;  // their outputs
   std::vector<std::array<double, 3>> scale;       // per hinge and group: L ||J_f||_F, used where f* == 0
   std::vector<std::size_t> order;  // categories in turn, so that a row cut short by its budget covers them all
-  std::vector<std::array<double, 12>> timing;     // the hinges timed
-  std::vector<std::string> categories;            // in order of first appearance
+  std::vector<std::array<double, 12>> timing;  // the hinges timed
+  std::vector<std::string> categories;         // in order of first appearance
   std::size_t skipped = 0;
 
   // The reference in MPFR at `bits` for hinge i (computed on first use, then kept; absent where the

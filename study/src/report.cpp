@@ -52,25 +52,27 @@ void write_markdown(std::ostream& out, const Study& s) {
   out << "# hinge study\n\n";
   out << "Machine: " << s.cpu << ", clock " << fixed(s.clock_ghz, 2) << " GHz (measured). Inputs: " << s.source << ", "
       << s.hinges << " hinges certified" << (s.skipped ? " (" + std::to_string(s.skipped) + " skipped)" : "") << " in "
-      << s.categories.size() << " categories. " << (s.quick ? "Quick study" : "Full study") << ", " << fixed(s.seconds, 0)
-      << " s.\n\n";
+      << s.categories.size() << " categories. " << (s.quick ? "Quick study" : "Full study") << ", "
+      << fixed(s.seconds, 0) << " s.\n\n";
   out << "## Time and accuracy per hinge\n\n";
   out << "Time: ns per hinge (one thread, median over passes), theta / theta and gradient / all three, and the\n"
          "last as a multiple of fast in double. Error: normwise, in units of 2^-53, each output rounded to double,\n"
          "against the certified oracle: the worst of any output (theta, gradient, Hessian) over all categories,\n"
          "and the worst Hessian error; own: the worst Hessian error in units of the type's own unit roundoff. On\n"
          "the frontier: no other row is both faster and more accurate (worst of any output).\n\n";
-  out << "| method | scalar | theta ns | +grad ns | +hess ns | x fast | worst (u) | worst hess (u) | worst own hess (u_type) | failed | nonfinite | frontier |\n";
+  out << "| method | scalar | theta ns | +grad ns | +hess ns | x fast | worst (u) | worst hess (u) | worst own hess "
+         "(u_type) | failed | nonfinite | frontier |\n";
   out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
   for (const Row& r : s.rows) {
     double own = 0;
     for (const auto& [c, e] : r.error_own) own = std::max(own, e[2].max);
     out << "| " << methods::method_name(r.method) << " | " << r.scalar.name() << " | " << ns(r.ns_per_hinge[0]) << " | "
         << ns(r.ns_per_hinge[1]) << " | " << ns(r.ns_per_hinge[2]) << " | "
-        << (base && base->ns_per_hinge[2] > 0 && r.ns_per_hinge[2] > 0 ? fixed(r.ns_per_hinge[2] / base->ns_per_hinge[2], 1) : "-")
-        << " | " << units(r.worst) << " | " << units(r.worst_hess) << " | " << (r.error_own.empty() ? "-" : units(own)) << " | "
-        << r.failed << " | "
-        << r.nonfinite << " | " << (r.on_frontier ? "yes" : "") << " |\n";
+        << (base && base->ns_per_hinge[2] > 0 && r.ns_per_hinge[2] > 0
+                ? fixed(r.ns_per_hinge[2] / base->ns_per_hinge[2], 1)
+                : "-")
+        << " | " << units(r.worst) << " | " << units(r.worst_hess) << " | " << (r.error_own.empty() ? "-" : units(own))
+        << " | " << r.failed << " | " << r.nonfinite << " | " << (r.on_frontier ? "yes" : "") << " |\n";
   }
   for (int g = 2; g >= 0; g -= 2) {
     out << "\n## Worst " << groups[g] << " error per category (units of 2^-53, rounded to double)\n\n| method/scalar |";
@@ -105,18 +107,19 @@ void write_markdown(std::ostream& out, const Study& s) {
         const auto it = std::find(m.vertices.begin(), m.vertices.end(), v);
         out << " " << (it == m.vertices.end() ? "-" : ns(m.ns_per_edge[it - m.vertices.begin()])) << " |";
       }
-      out << " " << (m.vertices.size() >= 2 ? fixed(m.k, 3) : "-") << " | " << (m.vertices.size() >= 2 ? fixed(m.ln_a, 2) : "-")
-          << " |\n";
+      out << " " << (m.vertices.size() >= 2 ? fixed(m.k, 3) : "-") << " | "
+          << (m.vertices.size() >= 2 ? fixed(m.ln_a, 2) : "-") << " |\n";
     }
-    out << "\nk and ln a: seconds per evaluation = a n^k over the sizes measured (n vertices), fitted in log-log as in\n"
+    out << "\nk and ln a: seconds per evaluation = a n^k over the sizes measured (n vertices), fitted in log-log as "
+           "in\n"
            "the paper's Table 2.\n";
     if (const SharedFit& f = s.shared_fit; !f.ln_a.empty()) {
       out << "\nAs the paper's Table 2 (double, sizes 11^2 .. 81^2): one k for all methods, the mean of theirs, k = "
           << fixed(f.k, 3) << "; ln a refitted with it, and the speedup of fast, exp(ln a_M - ln a_fast):\n\n"
           << "| method | ln a | fast's speedup |\n|---|---:|---:|\n";
       for (const auto& [method, ln_a] : f.ln_a)
-        out << "| " << method << " | " << fixed(ln_a, 3) << " | " << (f.has_fast ? fixed(std::exp(ln_a - f.fast_ln_a), 2) : "-")
-            << " |\n";
+        out << "| " << method << " | " << fixed(ln_a, 3) << " | "
+            << (f.has_fast ? fixed(std::exp(ln_a - f.fast_ln_a), 2) : "-") << " |\n";
     }
   }
   out << "\n## Build\n\n";
@@ -126,11 +129,11 @@ void write_markdown(std::ostream& out, const Study& s) {
 void print_summary(std::ostream& out, const Study& s) {
   const Row* base = baseline(s);
   char line[256];
-  std::snprintf(line, sizeof line, "hinge study: %zu hinges in %zu categories, %zu rows, %.2f GHz, %.0f s%s\n", s.hinges,
-                s.categories.size(), s.rows.size(), s.clock_ghz, s.seconds, s.quick ? " (quick)" : "");
+  std::snprintf(line, sizeof line, "hinge study: %zu hinges in %zu categories, %zu rows, %.2f GHz, %.0f s%s\n",
+                s.hinges, s.categories.size(), s.rows.size(), s.clock_ghz, s.seconds, s.quick ? " (quick)" : "");
   out << line;
-  std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %12s %14s %14s %8s  %s\n", "method", "scalar", "hess ns", "x fast",
-                "worst (u)", "worst hess (u)", "median w-s (u)", "failed", "frontier");
+  std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %12s %14s %14s %8s  %s\n", "method", "scalar", "hess ns",
+                "x fast", "worst (u)", "worst hess (u)", "median w-s (u)", "failed", "frontier");
   out << line;
   for (const Row& r : s.rows) {
     const auto ws = r.error_u.find("well-shaped");
@@ -138,20 +141,24 @@ void print_summary(std::ostream& out, const Study& s) {
     const std::string ratio = base && base->ns_per_hinge[2] > 0 && r.ns_per_hinge[2] > 0
                                   ? fixed(r.ns_per_hinge[2] / base->ns_per_hinge[2], 1)
                                   : "-";
-    std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %12s %14s %14s %8zu  %s\n", std::string(methods::method_name(r.method)).c_str(),
-                  r.scalar.name().c_str(), ns(r.ns_per_hinge[2]).c_str(), ratio.c_str(), units(r.worst).c_str(), units(r.worst_hess).c_str(),
-                  ws == r.error_u.end() ? "-" : units(median).c_str(), r.failed + r.nonfinite, r.on_frontier ? "*" : "");
+    std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %12s %14s %14s %8zu  %s\n",
+                  std::string(methods::method_name(r.method)).c_str(), r.scalar.name().c_str(),
+                  ns(r.ns_per_hinge[2]).c_str(), ratio.c_str(), units(r.worst).c_str(), units(r.worst_hess).c_str(),
+                  ws == r.error_u.end() ? "-" : units(median).c_str(), r.failed + r.nonfinite,
+                  r.on_frontier ? "*" : "");
     out << line;
   }
   for (const MeshRow& m : s.mesh) {
     if (m.vertices.empty()) continue;
-    std::snprintf(line, sizeof line, "mesh %-9s %-12s %s ns per interior edge at %d^2", std::string(methods::method_name(m.method)).c_str(),
-                  m.scalar.name().c_str(), ns(m.ns_per_edge.back()).c_str(), static_cast<int>(std::lround(std::sqrt(m.vertices.back()))));
+    std::snprintf(line, sizeof line, "mesh %-9s %-12s %s ns per interior edge at %d^2",
+                  std::string(methods::method_name(m.method)).c_str(), m.scalar.name().c_str(),
+                  ns(m.ns_per_edge.back()).c_str(), static_cast<int>(std::lround(std::sqrt(m.vertices.back()))));
     out << line;
     if (m.vertices.size() >= 2) out << ", k = " << fixed(m.k, 3);
     out << "\n";
   }
-  out << "(u: units of 2^-53, normwise, each output rounded to double, against the certified oracle; * on the frontier)\n";
+  out << "(u: units of 2^-53, normwise, each output rounded to double, against the certified oracle; * on the "
+         "frontier)\n";
 }
 
 }  // namespace hinge::study

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "hinge/baselines/derivatives.hpp"
-#include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/conformance/grading.hpp"
+#include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/reference/rounded.hpp"
 #include "prepared.hpp"
 
@@ -180,11 +180,11 @@ Row measure_row(methods::Method method, const ScalarType& scalar, const Prepared
             1, [&](std::size_t) { return r->theta; }, [&](std::size_t) { return w->angle.theta; }, wide_bits, u_own,
             p.scale[i][0]));
         o[1].push_back(own_error<Scalar>(
-            12, [&](std::size_t k) { return r->grad[k]; }, [&](std::size_t k) { return w->grad[k]; }, wide_bits,
-            u_own, p.scale[i][1]));
+            12, [&](std::size_t k) { return r->grad[k]; }, [&](std::size_t k) { return w->grad[k]; }, wide_bits, u_own,
+            p.scale[i][1]));
         o[2].push_back(own_error<Scalar>(
-            144, [&](std::size_t k) { return r->hess.reshaped()[k]; }, [&](std::size_t k) { return w->hess.reshaped()[k]; },
-            wide_bits, u_own, p.scale[i][2]));
+            144, [&](std::size_t k) { return r->hess.reshaped()[k]; },
+            [&](std::size_t k) { return w->hess.reshaped()[k]; }, wide_bits, u_own, p.scale[i][2]));
       }
       set_precision();
     }
@@ -248,6 +248,6 @@ HINGE_FOR_EACH_SCALAR(HINGE_STUDY_ROW_EXTERN)
 }  // namespace hinge::study::detail
 
 // For the generated instantiation units (hinge_scalar_units in study/CMakeLists.txt), one per scalar family.
-#define HINGE_STUDY_ROW_INSTANTIATE(S) \
-  template hinge::study::Row hinge::study::detail::measure_row<S>(                               \
+#define HINGE_STUDY_ROW_INSTANTIATE(S)                             \
+  template hinge::study::Row hinge::study::detail::measure_row<S>( \
       hinge::methods::Method, const hinge::ScalarType&, const hinge::study::detail::Prepared&, double, bool);

@@ -42,7 +42,8 @@ std::string cpu_name() {
 namespace {
 
 Row run_row(methods::Method method, const ScalarType& scalar, const Prepared& p, double budget, bool quick) {
-  return visit_scalar_type(scalar, [&]<class Scalar>() { return measure_row<Scalar>(method, scalar, p, budget, quick); });
+  return visit_scalar_type(scalar,
+                           [&]<class Scalar>() { return measure_row<Scalar>(method, scalar, p, budget, quick); });
 }
 
 // A row is on the frontier when no other row is at least as fast (all three outputs) and at least as
@@ -55,7 +56,9 @@ void mark_frontier(std::vector<Row>& rows) {
       for (const ErrorStats& g : e) r.worst = std::max(r.worst, g.max);
     }
   }
-  const auto usable = [](const Row& r) { return r.ns_per_hinge[2] > 0 && !r.error_u.empty() && r.failed + r.nonfinite == 0; };
+  const auto usable = [](const Row& r) {
+    return r.ns_per_hinge[2] > 0 && !r.error_u.empty() && r.failed + r.nonfinite == 0;
+  };
   for (Row& r : rows) {
     r.on_frontier = usable(r);
     for (const Row& o : rows)
@@ -84,7 +87,8 @@ Study run(const Options& o) {
                                                        methods::Method::autodiff, methods::Method::symbolic}
                         : o.methods;
   const std::vector<ScalarType> scalars = o.scalars.empty() ? default_scalars(o.quick) : o.scalars;
-  if (methods_.empty() || scalars.empty()) throw std::invalid_argument("hinge study: no method or no scalar type to study");
+  if (methods_.empty() || scalars.empty())
+    throw std::invalid_argument("hinge study: no method or no scalar type to study");
   const double budget = o.budget_seconds > 0 ? o.budget_seconds : (o.quick ? 1.5 : 20);
 
   Study s;
@@ -116,7 +120,8 @@ Study run(const Options& o) {
   if (o.mesh) {
     // The paper's cloth sizes, 11^2 .. 81^2 (the quick study: 11^2 .. 41^2), every method in double; the
     // full study also every method in the other types, and fast in double on to 1001^2.
-    const std::vector<int> paper = o.quick ? std::vector<int>{11, 21, 41} : std::vector<int>{11, 21, 31, 41, 51, 61, 71, 81};
+    const std::vector<int> paper =
+        o.quick ? std::vector<int>{11, 21, 41} : std::vector<int>{11, 21, 31, 41, 51, 61, 71, 81};
     std::vector<std::pair<methods::Method, ScalarType>> mesh_rows;
     const ScalarType dbl = parse_scalar_type("double");
     for (const methods::Method m : methods_)
@@ -124,7 +129,8 @@ Study run(const Options& o) {
         if (scalar.kind == dbl.kind || !o.quick) mesh_rows.emplace_back(m, scalar);
     std::size_t k = 0;
     for (const auto& [m, scalar] : mesh_rows) {
-      if (o.progress) o.progress("mesh: " + std::string(methods::method_name(m)) + " in " + scalar.name(), k++, mesh_rows.size());
+      if (o.progress)
+        o.progress("mesh: " + std::string(methods::method_name(m)) + " in " + scalar.name(), k++, mesh_rows.size());
       std::vector<int> sizes = paper;
       if (m == methods::Method::fast && scalar.kind == dbl.kind) {
         sizes.push_back(o.quick ? 81 : 101);

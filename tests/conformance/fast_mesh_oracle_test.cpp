@@ -17,7 +17,6 @@
 namespace hinge::oracle {
 namespace {
 
-
 TEST(FastMeshOracle, NormwiseWithinFourUnitsAndTwoInTheMedian) {
   struct Case {
     std::string name;

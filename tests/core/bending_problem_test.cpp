@@ -27,11 +27,16 @@ std::string message(F&& f) {
 constexpr double inf = std::numeric_limits<double>::infinity();
 
 TEST(BendingProblem, EachRangeIsTheContractsAndItsEndsAreWhereItSays) {
-  EXPECT_EQ(check_k({0, "--k"}), 0);  // k >= 0
+  EXPECT_EQ(check_k({0, "--k"}), 0);                  // k >= 0
   EXPECT_EQ(check_poisson({0.5, "--poisson"}), 0.5);  // nu in (-1, 0.5]
   EXPECT_EQ(check_poisson({-0.999, "--poisson"}), -0.999);
-  EXPECT_EQ(message([] { check_poisson({-1, "--poisson"}); }), "--poisson: Poisson's ratio nu must be in (-1, 0.5], got -1");
-  EXPECT_EQ(message([] { check_poisson({std::nextafter(0.5, 1.0), "nu"}); }),
+  EXPECT_EQ(message([] {
+              check_poisson({-1, "--poisson"});
+            }),
+            "--poisson: Poisson's ratio nu must be in (-1, 0.5], got -1");
+  EXPECT_EQ(message([] {
+              check_poisson({std::nextafter(0.5, 1.0), "nu"});
+            }),
             "nu: Poisson's ratio nu must be in (-1, 0.5], got 0.5000000000000001");
   EXPECT_EQ(message([] { check_k({-1, "--k"}); }), "--k: the bending stiffness k must be finite and >= 0, got -1");
   EXPECT_EQ(message([] { check_young({0, "--young"}); }), "--young: Young's modulus Y must be finite and > 0, got 0");
@@ -58,7 +63,9 @@ TEST(BendingProblem, TheSentenceDiffersOnlyInTheParametersName) {
 TEST(BendingProblem, StiffnessFromTheMaterialIsEquationEleven) {
   const double k = stiffness_from_material({2e6, "Y"}, {0.3, "nu"}, {5e-4, "h"});
   EXPECT_EQ(k, bending_stiffness(2e6, 0.3, 5e-4));  // the same expression, the same bits
-  EXPECT_EQ(message([] { stiffness_from_material({1e300, "--young"}, {0, "--poisson"}, {1e10, "--thickness"}); }),
+  EXPECT_EQ(message([] {
+              stiffness_from_material({1e300, "--young"}, {0, "--poisson"}, {1e10, "--thickness"});
+            }),
             "--young, --poisson, --thickness: k = Y h^3 / (24 (1 - nu^2)) (eq. (11)) overflows double");
 }
 
@@ -115,7 +122,8 @@ TEST(BendingProblem, ADegenerateRestFaceIsNamedWithTheRestFile) {
 TEST(BendingProblem, ZeroThreadsMeansAllCoresAndTheRangeIsChecked) {
   EXPECT_GE(resolve_threads(0, "--threads"), 1);
   EXPECT_EQ(resolve_threads(3, "--threads"), 3);
-  EXPECT_EQ(message([] { resolve_threads(-2, "threads="); }), "threads=: threads must be in [0, 4096] (0: all cores), got -2");
+  EXPECT_EQ(message([] { resolve_threads(-2, "threads="); }),
+            "threads=: threads must be in [0, 4096] (0: all cores), got -2");
 }
 
 }  // namespace

@@ -87,8 +87,7 @@ void expect_consistent(const Mesh& m, const Topology& t) {
   }
   // Edges in order of first appearance: their first half-edges 3 f + i increase strictly.
   for (std::size_t id = 0; id + 1 < t.edges.size(); ++id) {
-    EXPECT_LT(3 * t.edges[id].face[0] + t.edges[id].local[0],
-              3 * t.edges[id + 1].face[0] + t.edges[id + 1].local[0]);
+    EXPECT_LT(3 * t.edges[id].face[0] + t.edges[id].local[0], 3 * t.edges[id + 1].face[0] + t.edges[id + 1].local[0]);
   }
   // a -> b runs in face[0], b -> a in face[1]; hinges are the interior edges, in edge order.
   std::size_t interior = 0;
@@ -175,8 +174,7 @@ TEST(Topology, ClosedOctahedronHasEveryEdgeInterior) {
   EXPECT_EQ(std::count(t.hinge_of_edge.begin(), t.hinge_of_edge.end(), -1), 0);
   // Convex with outward normals: every hinge is a ridge, theta > 0, orientation +1.
   for (const Hinge& h : t.hinges) {
-    EXPECT_EQ(hinge_orientation_exact(m.vertices[h.x[0]], m.vertices[h.x[1]], m.vertices[h.x[2]],
-                                      m.vertices[h.x[3]]),
+    EXPECT_EQ(hinge_orientation_exact(m.vertices[h.x[0]], m.vertices[h.x[1]], m.vertices[h.x[2]], m.vertices[h.x[3]]),
               1);
   }
 }
@@ -192,9 +190,8 @@ TEST(Topology, OpenGridCountsBoundaryEdges) {
   EXPECT_EQ(t.hinges.size(), edges - boundary);
   EXPECT_EQ(std::size_t(std::count(t.hinge_of_edge.begin(), t.hinge_of_edge.end(), -1)), boundary);
   EXPECT_EQ(m.vertices.size() - t.edges.size() + m.faces.size(), 1u);  // a disk
-  for (const Hinge& h : t.hinges) {  // a flat grid: every hinge has orientation 0
-    EXPECT_EQ(hinge_orientation_exact(m.vertices[h.x[0]], m.vertices[h.x[1]], m.vertices[h.x[2]],
-                                      m.vertices[h.x[3]]),
+  for (const Hinge& h : t.hinges) {                                    // a flat grid: every hinge has orientation 0
+    EXPECT_EQ(hinge_orientation_exact(m.vertices[h.x[0]], m.vertices[h.x[1]], m.vertices[h.x[2]], m.vertices[h.x[3]]),
               0);
   }
 }
@@ -219,8 +216,8 @@ TEST(Topology, RejectsNonManifoldEdgeNamingAllFaces) {
   // Faces 3, 5 and 8 share the undirected edge {4, 9}; the others are unrelated triangles.
   Mesh m;
   for (int i = 0; i < 20; ++i) m.vertices.push_back({double(i), double(i * i % 7), 0.0});
-  m.faces = {{0, 1, 2}, {10, 11, 12}, {13, 14, 15}, {4, 9, 5}, {16, 17, 18}, {9, 4, 6}, {1, 0, 3}, {0, 2, 19},
-             {9, 4, 7}};
+  m.faces = {{0, 1, 2}, {10, 11, 12}, {13, 14, 15}, {4, 9, 5}, {16, 17, 18},
+             {9, 4, 6}, {1, 0, 3},    {0, 2, 19},   {9, 4, 7}};
   const std::string msg = input_error_of([&] { build_topology(m); });
   EXPECT_TRUE(contains(msg, "face 3 (OBJ face 4)"));
   EXPECT_TRUE(contains(msg, "face 5 (OBJ face 6)"));

@@ -40,8 +40,7 @@ double naive_orientation(const Point& x0, const Point& x1, const Point& x2, cons
   const Point e{x2[0] - x1[0], x2[1] - x1[1], x2[2] - x1[2]};
   const Point u{x0[0] - x1[0], x0[1] - x1[1], x0[2] - x1[2]};
   const Point w{x1[0] - x3[0], x1[1] - x3[1], x1[2] - x3[2]};
-  return e[0] * (u[1] * w[2] - u[2] * w[1]) + e[1] * (u[2] * w[0] - u[0] * w[2]) +
-         e[2] * (u[0] * w[1] - u[1] * w[0]);
+  return e[0] * (u[1] * w[2] - u[2] * w[1]) + e[1] * (u[2] * w[0] - u[0] * w[2]) + e[2] * (u[0] * w[1] - u[1] * w[0]);
 }
 
 int sign(std::int64_t v) { return (v > 0) - (v < 0); }
@@ -94,8 +93,8 @@ TEST(Predicates, ZeroAreaFilterFailsButExactAnswerIsNonzero) {
 TEST(Predicates, ZeroAreaAtTinyExponentsAndSubnormals) {
   const Point o{0, 0, 0};
   EXPECT_TRUE(zero_area_exact(o, {kDenormMin, 0, 0}, {2 * kDenormMin, 0, 0}));
-  EXPECT_TRUE(zero_area_exact(o, {kDenormMin, kDenormMin, kDenormMin},
-                              {-3 * kDenormMin, -3 * kDenormMin, -3 * kDenormMin}));
+  EXPECT_TRUE(
+      zero_area_exact(o, {kDenormMin, kDenormMin, kDenormMin}, {-3 * kDenormMin, -3 * kDenormMin, -3 * kDenormMin}));
   EXPECT_FALSE(zero_area_exact(o, {kDenormMin, 0, 0}, {0, kDenormMin, 0}));
   EXPECT_FALSE(zero_area_exact(o, {kDenormMin, 0, 0}, {0, 0, kDenormMin}));
   // Products of subnormal differences underflow to zero in double; the exact answer is still "nonzero".
@@ -154,8 +153,8 @@ TEST(Predicates, AgreeWithIntegerArithmeticAcrossAllExponents) {
       d1[k] = v[1][k] - v[0][k];
       d2[k] = v[2][k] - v[0][k];
     }
-    const bool zero = d1[1] * d2[2] == d1[2] * d2[1] && d1[2] * d2[0] == d1[0] * d2[2] &&
-                      d1[0] * d2[1] == d1[1] * d2[0];
+    const bool zero =
+        d1[1] * d2[2] == d1[2] * d2[1] && d1[2] * d2[0] == d1[0] * d2[2] && d1[0] * d2[1] == d1[1] * d2[0];
     collinear += zero;
     ASSERT_EQ(zero_area_exact(x[0], x[1], x[2]), zero) << "trial " << trial << ", e = " << e;
     // det[x2 - x1, x0 - x1, x1 - x3] with (x0, x1, x2, x3) = (v0, v1, v2, v3).
@@ -165,11 +164,10 @@ TEST(Predicates, AgreeWithIntegerArithmeticAcrossAllExponents) {
       u[k] = v[0][k] - v[1][k];
       w[k] = v[1][k] - v[3][k];
     }
-    const std::int64_t det = e0[0] * (u[1] * w[2] - u[2] * w[1]) + e0[1] * (u[2] * w[0] - u[0] * w[2]) +
-                             e0[2] * (u[0] * w[1] - u[1] * w[0]);
+    const std::int64_t det =
+        e0[0] * (u[1] * w[2] - u[2] * w[1]) + e0[1] * (u[2] * w[0] - u[0] * w[2]) + e0[2] * (u[0] * w[1] - u[1] * w[0]);
     flat += det == 0;
-    ASSERT_EQ(hinge_orientation_exact(x[0], x[1], x[2], x[3]), sign(det))
-        << "trial " << trial << ", e = " << e;
+    ASSERT_EQ(hinge_orientation_exact(x[0], x[1], x[2], x[3]), sign(det)) << "trial " << trial << ", e = " << e;
   }
   // Both outcomes occur often enough for the comparison to mean something.
   EXPECT_GT(collinear, 100);
@@ -212,9 +210,7 @@ TEST(Predicates, HingeOrientationFilterFailsButExactAnswerIsNonzero) {
   EXPECT_EQ(hinge_orientation_exact(x0, {0, 0, 0}, x2, x3), 0);
   // The same hinge far from the origin: translating by an exact offset keeps the sign.
   const Point offset{0x1p40, -0x1p41, 0x1p39};
-  EXPECT_EQ(hinge_orientation_exact(add(x0, offset), add(Point{0, 0, 0}, offset), add(x2, offset),
-                                    add(x3, offset)),
-            0);
+  EXPECT_EQ(hinge_orientation_exact(add(x0, offset), add(Point{0, 0, 0}, offset), add(x2, offset), add(x3, offset)), 0);
 }
 
 TEST(Predicates, HingeOrientationNearOverflow) {

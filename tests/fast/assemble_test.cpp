@@ -11,15 +11,14 @@
 #include <vector>
 
 #include "fast_support.hpp"
-#include "support/tolerance.hpp"
 #include "hinge/fast/assemble.hpp"
-#include "src/assembly_plan.hpp"  // detail::plan_assembly
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
+#include "src/assembly_plan.hpp"  // detail::plan_assembly
+#include "support/tolerance.hpp"
 
 namespace hinge::fast {
 namespace {
-
 
 constexpr double u = 0x1p-53;
 
@@ -28,7 +27,8 @@ TEST(Assemble, FastMatchesReferenceInDouble) {
   const Topology t = build_topology(rest);
   for (Model model : {Model::tan, Model::shells, Model::willmore, Model::bridson})
     for (EdgeOrientation o : {EdgeOrientation::first_face, EdgeOrientation::second_face}) {
-      const std::string what = std::string(model_name(model)) + (o == EdgeOrientation::first_face ? " first" : " second");
+      const std::string what =
+          std::string(model_name(model)) + (o == EdgeOrientation::first_face ? " first" : " second");
       Assembler<double> a(t, o);
       const auto c = reference::rest_state<double>(rest, t, {model, 0.7, 0});  // the same coefficients for both
       const auto f = a.evaluate(deformed, c, model, want_all, 2);
@@ -36,9 +36,11 @@ TEST(Assemble, FastMatchesReferenceInDouble) {
       // The same pattern, entry for entry (pattern.hpp).
       ASSERT_EQ(f.hessian.nonZeros(), r.hessian.nonZeros()) << what;
       EXPECT_TRUE(std::equal(f.hessian.outerIndexPtr(), f.hessian.outerIndexPtr() + f.hessian.outerSize() + 1,
-                             r.hessian.outerIndexPtr())) << what;
+                             r.hessian.outerIndexPtr()))
+          << what;
       EXPECT_TRUE(std::equal(f.hessian.innerIndexPtr(), f.hessian.innerIndexPtr() + f.hessian.nonZeros(),
-                             r.hessian.innerIndexPtr())) << what;
+                             r.hessian.innerIndexPtr()))
+          << what;
       // The bound: 8 units of 2^-53 normwise (each within a few units of the exact sum; measured
       // 2.6). Gradient alike. The energies here are sums of psi >= 0 (but Bridson's): relative 8 units.
       EXPECT_LE(test::sparse_units(f.hessian, r.hessian, u), 8) << what;
@@ -126,7 +128,8 @@ TEST(Assemble, ThreadsGiveIdenticalBytes) {
     const auto many = a.evaluate(deformed, c, Model::tan, want_all, threads);
     EXPECT_EQ(std::memcmp(&one.energy, &many.energy, sizeof(double)), 0) << threads;
     ASSERT_EQ(one.gradient.size(), many.gradient.size());
-    EXPECT_EQ(std::memcmp(one.gradient.data(), many.gradient.data(), sizeof(double) * one.gradient.size()), 0) << threads;
+    EXPECT_EQ(std::memcmp(one.gradient.data(), many.gradient.data(), sizeof(double) * one.gradient.size()), 0)
+        << threads;
     ASSERT_EQ(one.hessian.nonZeros(), many.hessian.nonZeros());
     EXPECT_EQ(std::memcmp(one.hessian.valuePtr(), many.hessian.valuePtr(), sizeof(double) * one.hessian.nonZeros()), 0)
         << threads;
@@ -151,8 +154,7 @@ struct Bytes {
   std::vector<double> gradient, values;
   std::vector<int> inner;
   explicit Bytes(const MeshDerivatives<double>& m)
-      : energy(m.energy),
-        gradient(m.gradient.data(), m.gradient.data() + m.gradient.size()),
+      : energy(m.energy), gradient(m.gradient.data(), m.gradient.data() + m.gradient.size()),
         values(m.hessian.valuePtr(), m.hessian.valuePtr() + m.hessian.nonZeros()),
         inner(m.hessian.innerIndexPtr(), m.hessian.innerIndexPtr() + m.hessian.nonZeros()) {}
 };
@@ -178,8 +180,9 @@ Mesh shuffled(const Mesh& m, unsigned seed) {
   Mesh out;
   out.vertices.resize(m.vertices.size());
   for (std::size_t i = 0; i < order.size(); ++i) out.vertices[static_cast<std::size_t>(order[i])] = m.vertices[i];
-  for (const auto& f : m.faces) out.faces.push_back({order[static_cast<std::size_t>(f[0])], order[static_cast<std::size_t>(f[1])],
-                                                     order[static_cast<std::size_t>(f[2])]});
+  for (const auto& f : m.faces)
+    out.faces.push_back({order[static_cast<std::size_t>(f[0])], order[static_cast<std::size_t>(f[1])],
+                         order[static_cast<std::size_t>(f[2])]});
   return out;
 }
 
@@ -357,7 +360,8 @@ TEST(Assemble, StaleValuesAreOverwritten) {
   Assembler<double> other(t);
   const auto fresh = other.evaluate(b, c, Model::tan, want_all, 1);
   ASSERT_EQ(reused.hessian.nonZeros(), fresh.hessian.nonZeros());
-  EXPECT_EQ(std::memcmp(reused.hessian.valuePtr(), fresh.hessian.valuePtr(), sizeof(double) * fresh.hessian.nonZeros()), 0);
+  EXPECT_EQ(std::memcmp(reused.hessian.valuePtr(), fresh.hessian.valuePtr(), sizeof(double) * fresh.hessian.nonZeros()),
+            0);
 }
 
 // The sizes of the terms the mesh sums are made of (hinge::reference, per hinge): |psi'| |grad theta|
@@ -416,8 +420,12 @@ TEST(Assemble, ErrorsNameTheHingeAsTheReferenceDoes) {
     const auto f = error_of<InputError>([&] { a.evaluate(bad, c, Model::shells); });
     EXPECT_EQ(f, error_of<InputError>([&] { reference::assemble<double>(bad, t, c, Model::shells); }));
     EXPECT_NE(f.find("OBJ numbering"), std::string::npos) << f;
-    EXPECT_EQ(error_of<InputError>([&] { a.rest_state(bad, {Model::shells, 1, 0}); }),
-              error_of<InputError>([&] { reference::rest_state<double>(bad, t, {Model::shells, 1, 0}); }));
+    EXPECT_EQ(error_of<InputError>([&] {
+                a.rest_state(bad, {Model::shells, 1, 0});
+              }),
+              error_of<InputError>([&] {
+                reference::rest_state<double>(bad, t, {Model::shells, 1, 0});
+              }));
   }
   {  // collinear but distinct vertices
     Mesh bad = rest;
@@ -442,8 +450,12 @@ TEST(Assemble, ErrorsNameTheHingeAsTheReferenceDoes) {
     const std::string f = error_of<DomainError>([&] { a.evaluate(flat, c, Model::tan); });
     EXPECT_EQ(f, error_of<DomainError>([&] { reference::assemble<double>(flat, t, c, Model::tan); }));
     EXPECT_NE(f.find("folded flat"), std::string::npos) << f;
-    EXPECT_EQ(error_of<DomainError>([&] { a.rest_state(flat, {Model::tan, 1, 0}); }),
-              error_of<DomainError>([&] { reference::rest_state<double>(flat, t, {Model::tan, 1, 0}); }));
+    EXPECT_EQ(error_of<DomainError>([&] {
+                a.rest_state(flat, {Model::tan, 1, 0});
+              }),
+              error_of<DomainError>([&] {
+                reference::rest_state<double>(flat, t, {Model::tan, 1, 0});
+              }));
   }
 }
 

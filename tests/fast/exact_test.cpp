@@ -79,11 +79,11 @@ TEST(Exact, FusedWithoutFmaAndTheProductErrorAreTheFusedMultiplyAddsBitForBit) {
       b[i] = random(exponent(rng));
       const double p = a[i] * b[i];
       switch (shape(rng)) {
-        case 0: c[i] = random(exponent(rng)); break;                                        // anything
-        case 1: c[i] = -p; break;                                                           // cancels to e
-        case 2: c[i] = -p + std::ldexp(p, -52) * (sign(rng) ? 1 : -1); break;               // nearly
+        case 0: c[i] = random(exponent(rng)); break;                                                     // anything
+        case 1: c[i] = -p; break;                                                                        // cancels to e
+        case 2: c[i] = -p + std::ldexp(p, -52) * (sign(rng) ? 1 : -1); break;                            // nearly
         case 3: c[i] = std::ldexp(p, -60 - static_cast<int>(rng() % 60)) * (sign(rng) ? 1 : -1); break;  // tail
-        case 4: c[i] = std::ldexp(p, 40 + static_cast<int>(rng() % 30)); break;             // far above
+        case 4: c[i] = std::ldexp(p, 40 + static_cast<int>(rng() % 30)); break;                          // far above
         case 5: {  // the double rounding that rounding to odd prevents: c + p a tie, the product's error
                    // -2^-(53+2j) just below it (a b = 2^-53 (1 - 2^-2j) 2^t, c = (1 + 2^-52) 2^t, odd)
           const int t = exponent(rng) / 2, j = 27 + static_cast<int>(rng() % 26), u = exponent(rng) / 4;
@@ -93,7 +93,7 @@ TEST(Exact, FusedWithoutFmaAndTheProductErrorAreTheFusedMultiplyAddsBitForBit) {
           c[i] = s * std::ldexp(1 + std::ldexp(1, -52), t);
           break;
         }
-        default:                                                                            // ties, zeros
+        default:  // ties, zeros
           a[i] = 1 + std::ldexp(static_cast<double>(rng() % 1024), -10);
           b[i] = 1 + std::ldexp(1, -43);
           c[i] = (rng() % 3 == 0) ? -0.0 : (rng() % 2 ? 0.0 : -a[i]);
@@ -109,8 +109,8 @@ TEST(Exact, FusedWithoutFmaAndTheProductErrorAreTheFusedMultiplyAddsBitForBit) {
                       << " against " << want;
       const double want_error = std::fma(a[i], b[i], -p[i]);  // the exact error of the product
       if (std::bit_cast<std::uint64_t>(error[i]) != std::bit_cast<std::uint64_t>(want_error) && ++mismatches <= 5)
-        ADD_FAILURE() << std::hexfloat << "a " << a[i] << " b " << b[i] << ": product error " << error[i]
-                      << " against " << want_error;
+        ADD_FAILURE() << std::hexfloat << "a " << a[i] << " b " << b[i] << ": product error " << error[i] << " against "
+                      << want_error;
     }
   }
   EXPECT_EQ(mismatches, 0) << "of " << compared;

@@ -64,7 +64,8 @@ std::pair<double, double> check(const std::vector<std::array<double, 12>>& hinge
 TEST(Faithful, WithinOneUnitOnWellShapedHingesAndShortHingeEdges) {
   std::vector<std::array<double, 12>> hinges = test::well_shaped_hinges(test::cases(150), 51);
   for (const auto& base : test::well_shaped_hinges(test::cases(30), 52))
-    for (int k : {3, 9, 20, 35}) hinges.push_back(shortened(base, k));  // (2^-40 of coordinates near 100 rounds onto x1)
+    for (int k : {3, 9, 20, 35})
+      hinges.push_back(shortened(base, k));  // (2^-40 of coordinates near 100 rounds onto x1)
   int checked = 0;
   const auto [worst, plain] = check(hinges, checked);
   EXPECT_GE(checked, static_cast<int>(hinges.size()) * 9 / 10);
@@ -121,7 +122,8 @@ TEST(Faithful, PowerOfTwoScalingIsExact) {
       const HingeDerivatives<double> s = faithful_hinge_derivatives(y);
       EXPECT_EQ(s.theta, d.theta) << k << " " << test::describe(x);
       for (int i = 0; i < 12; ++i) ASSERT_EQ(s.grad[i], std::ldexp(d.grad[i], -k)) << k << " " << test::describe(x);
-      for (int i = 0; i < 144; ++i) ASSERT_EQ(s.hess.data()[i], std::ldexp(d.hess.data()[i], -2 * k)) << k << " " << test::describe(x);
+      for (int i = 0; i < 144; ++i)
+        ASSERT_EQ(s.hess.data()[i], std::ldexp(d.hess.data()[i], -2 * k)) << k << " " << test::describe(x);
     }
   }
 }

@@ -7,9 +7,9 @@
 #include <random>
 #include <string>
 
-#include "hinge/reference/evaluate.hpp"
 #include "hinge/core/mesh.hpp"
 #include "hinge/core/scalar.hpp"
+#include "hinge/reference/evaluate.hpp"
 
 namespace hinge::test {
 
@@ -34,7 +34,8 @@ inline Mesh bumpy_grid(int n, unsigned seed, double amplitude = 1.0) {
   Mesh m;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      m.vertices.push_back({i + jitter(rng), j + jitter(rng), amplitude * std::sin(i * 0.9) * std::cos(j * 0.7) + jitter(rng)});
+      m.vertices.push_back(
+          {i + jitter(rng), j + jitter(rng), amplitude * std::sin(i * 0.9) * std::cos(j * 0.7) + jitter(rng)});
   auto v = [n](int i, int j) { return static_cast<Index>(j * n + i); };
   for (int j = 0; j + 1 < n; ++j)
     for (int i = 0; i + 1 < n; ++i) {

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "fast_support.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/fast/assemble.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
-#include "hinge/core/errors.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "support/fp_environment.hpp"
 
@@ -16,7 +16,8 @@ namespace {
 using hinge::test::ScopedFpEnvironment;
 using hinge::test::Setting;
 
-const std::array<double, 12> kHinge = {0.125, 0.75, -0.5, -0.25, 0.0625, 0.0, 1.0, 0.125, -0.0625, 0.625, -0.875, 0.375};
+const std::array<double, 12> kHinge = {0.125, 0.75,  -0.5,    -0.25, 0.0625, 0.0,
+                                       1.0,   0.125, -0.0625, 0.625, -0.875, 0.375};
 
 TEST(FastFpEnvironment, PerHingeKernelsRefuseABrokenEnvironment) {
   const std::vector<std::array<double, 12>> many(4, kHinge);

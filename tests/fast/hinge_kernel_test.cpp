@@ -19,8 +19,8 @@
 #include "hinge/fast/faithful.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/fast/isa.hpp"
-#include "src/generic_kernel.hpp"  // detail::wide_range_kernel
 #include "hinge/reference/evaluate.hpp"
+#include "src/generic_kernel.hpp"  // detail::wide_range_kernel
 #include "support/hinges.hpp"
 #include "support/tolerance.hpp"
 
@@ -95,7 +95,8 @@ TEST(HingeKernel, DoubleStaysWithinFourUnitsOnRandomTrianglesNearlyFlatOrNot) {
     const ThetaDerivatives<mpfr> e = exact(x);
     const double theta = to_double(e.angle.theta);
     const double t = theta == 0 ? 0 : std::fabs(d.theta - theta) / std::fabs(theta) / 0x1p-53;
-    const double error = std::max({t, test::normwise_units(d.grad, e.grad, 0x1p-53), test::normwise_units(d.hess, e.hess, 0x1p-53)});
+    const double error =
+        std::max({t, test::normwise_units(d.grad, e.grad, 0x1p-53), test::normwise_units(d.hess, e.hess, 0x1p-53)});
     EXPECT_LE(error, 4) << test::describe(x);
     worst = std::max(worst, error);
     ++checked;
@@ -197,10 +198,10 @@ std::string input_error(auto&& f) {
 
 TEST(HingeKernel, DegenerateHingesAreErrorsWithTheReferenceMessages) {
   std::vector<std::array<double, 12>> bad = {
-      {0.5, 1, 0, 1, 0, 0, 1, 0, 0, 0.5, -1, 0},           // x1 == x2
-      {0, 0, 0, 1, 0, 0, 2, 0, 0, 0.5, -1, 0},             // upper collinear
-      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 3, 0, 0},              // lower collinear
-      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, NAN, 0},          // not finite
+      {0.5, 1, 0, 1, 0, 0, 1, 0, 0, 0.5, -1, 0},               // x1 == x2
+      {0, 0, 0, 1, 0, 0, 2, 0, 0, 0.5, -1, 0},                 // upper collinear
+      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 3, 0, 0},                  // lower collinear
+      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, NAN, 0},              // not finite
       {0.1, 0.1 + 0x1p-52, 0, 0, 0, 0, 1, 1, 0, 0.5, -1, 0}};  // upper nearly collinear: fine
   for (const auto& x : bad) {
     const std::string f = input_error([&] { hinge_derivatives<double>(x); });
@@ -231,7 +232,8 @@ TEST(HingeKernel, HessianIsExactlySymmetricAndGradientSumsToZero) {
     const HingeDerivatives<double> d = hinge_derivatives<double>(x);
     EXPECT_EQ(d.hess, d.hess.transpose());
     // Translation null space: the four vertex gradients cancel up to the roundings of their terms.
-    const Eigen::Vector3d sum = d.grad.segment<3>(0) + d.grad.segment<3>(3) + d.grad.segment<3>(6) + d.grad.segment<3>(9);
+    const Eigen::Vector3d sum =
+        d.grad.segment<3>(0) + d.grad.segment<3>(3) + d.grad.segment<3>(6) + d.grad.segment<3>(9);
     EXPECT_LE(sum.norm(), 8 * 0x1p-53 * d.grad.norm()) << test::describe(x);
   }
 }
@@ -247,8 +249,10 @@ template <class Scalar>
 bool all_finite(const HingeDerivatives<Scalar>& d) {
   using std::isfinite;
   if (!isfinite(d.theta)) return false;
-  for (const Scalar& v : d.grad) if (!isfinite(v)) return false;
-  for (const Scalar& v : d.hess.reshaped()) if (!isfinite(v)) return false;
+  for (const Scalar& v : d.grad)
+    if (!isfinite(v)) return false;
+  for (const Scalar& v : d.hess.reshaped())
+    if (!isfinite(v)) return false;
   return true;
 }
 
@@ -273,12 +277,30 @@ void expect_scaled_exactly(const HingeDerivatives<double>& d, const HingeDerivat
 
 // docs/testing.md, finding 2: a hinge edge 5e-12 times the longest edge, at the size where the kernel
 // stops rescaling (largest difference near 2^-200). 1 / (l_0^3 2A) overflowed; r_0 = m_0 / l_0^2 does not.
-const std::array<double, 12> kFinding2{0, -7.7836328544510523e-73, 3.1134531417804208e-61, 0, 0, 0, 0,
-                                       1.5567265708902105e-72, 0, 1.5560780158936893e-62, -7.7836328544510523e-73,
+const std::array<double, 12> kFinding2{0,
+                                       -7.7836328544510523e-73,
+                                       3.1134531417804208e-61,
+                                       0,
+                                       0,
+                                       0,
+                                       0,
+                                       1.5567265708902105e-72,
+                                       0,
+                                       1.5560780158936893e-62,
+                                       -7.7836328544510523e-73,
                                        -3.1095621360807212e-61};
 // docs/testing.md, finding 3: kappa_shape 2e11 (a short hinge edge), theta = -0.05.
-const std::array<double, 12> kFinding3{0, -2.4545467326488632e-103, 9.8181869305954537e-92, 0, 0, 0, 0,
-                                       4.9090934652977265e-103, 0, 4.9070482653539194e-93, -2.4545467326488632e-103,
+const std::array<double, 12> kFinding3{0,
+                                       -2.4545467326488632e-103,
+                                       9.8181869305954537e-92,
+                                       0,
+                                       0,
+                                       0,
+                                       0,
+                                       4.9090934652977265e-103,
+                                       0,
+                                       4.9070482653539194e-93,
+                                       -2.4545467326488632e-103,
                                        -9.8059167535386641e-92};
 // A hinge edge about 0.34 of the longest edge on a hinge 2^-10 from flat.
 const std::array<double, 12> kShortishNearlyFlat{0.1, 1, 0, 0, 0, 0, 0.35, 0, 0, 0.2, -1, 0x1p-10};
@@ -328,7 +350,8 @@ TEST(HingeKernel, HingeEdgesBelowAQuarterTakeTheFaithfulModeAndStayWithinOneUnit
         for (int c = 0; c < 3; ++c) s += (x[3 * a + c] - x[3 * b + c]) * (x[3 * a + c] - x[3 * b + c]);
         return s;
       };
-      const double l0 = squared(2, 1), longest = std::max({squared(0, 2), squared(1, 0), squared(3, 2), squared(1, 3), l0});
+      const double l0 = squared(2, 1),
+                   longest = std::max({squared(0, 2), squared(1, 0), squared(3, 2), squared(1, 3), l0});
       if (!(16 * l0 < 0.99 * longest)) continue;  // not short (or too near the threshold to tell)
       const HingeDerivatives<double> f = faithful_hinge_derivatives(x);
       ASSERT_EQ(d.theta, f.theta) << test::describe(x);
@@ -346,7 +369,8 @@ TEST(HingeKernel, HingeEdgesBelowAQuarterTakeTheFaithfulModeAndStayWithinOneUnit
 TEST(HingeKernel, NearlyFlatHingesWithAHingeEdgeBelowAHalfTakeTheFaithfulMode) {
   // Between 1/4 and 1/2 of the longest edge, within ~2^-6 of flat (or folded): the faithful mode, bit for
   // bit (hinge_kernel_double.cpp); the same hinge well bent stays on the plain path.
-  const HingeDerivatives<double> d = hinge_derivatives<double>(kShortishNearlyFlat), f = faithful_hinge_derivatives(kShortishNearlyFlat);
+  const HingeDerivatives<double> d = hinge_derivatives<double>(kShortishNearlyFlat),
+                                 f = faithful_hinge_derivatives(kShortishNearlyFlat);
   EXPECT_EQ(d.theta, f.theta);
   for (int i = 0; i < 12; ++i) ASSERT_EQ(d.grad[i], f.grad[i]);
   for (int i = 0; i < 144; ++i) ASSERT_EQ(d.hess.data()[i], f.hess.data()[i]);
@@ -430,7 +454,8 @@ TEST(HingeKernel, ExtremeShapesAreFiniteAndAccurate) {
     const HingeDerivatives<double> d = hinge_derivatives<double>(h.x);
     ASSERT_TRUE(all_finite(d)) << h.name;
     const ThetaDerivatives<mpfr> e = exact_with_bits(h.x, 2048);
-    const double t = std::fabs(d.theta - to_double(e.angle.theta)) / std::max(1.0, std::fabs(to_double(e.angle.theta))) / 0x1p-53;
+    const double t =
+        std::fabs(d.theta - to_double(e.angle.theta)) / std::max(1.0, std::fabs(to_double(e.angle.theta))) / 0x1p-53;
     const double g = test::normwise_units(d.grad, e.grad, 0x1p-53), H = test::normwise_units(d.hess, e.hess, 0x1p-53);
     RecordProperty(std::string(h.name) + " units (theta, grad, hess)",
                    std::to_string(t) + ", " + std::to_string(g) + ", " + std::to_string(H));
@@ -501,7 +526,7 @@ std::vector<std::array<double, 12>> same_bits_hinges(int well_shaped) {
     for (const auto& x : {kFinding2, kFinding3, test::flat_hinge()})
       if (const auto y = scaled_exactly(x, k)) hinges.push_back(*y);
   hinges.push_back(test::flat_hinge());
-  hinges.push_back({0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, 1, 0});  // folded flat: theta = +pi
+  hinges.push_back({0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, 1, 0});           // folded flat: theta = +pi
   hinges.push_back({0.3, 1, 0, 0, 0, 0, 1, 0, 0, 0.6, -1.1, 0x1p-60});  // nearly flat: theta from the determinant
   hinges.push_back(kShortishNearlyFlat);  // l0 / L about 0.35, nearly flat: the faithful mode
   return hinges;
@@ -518,7 +543,8 @@ TEST(HingeKernel, EveryInstructionSetGivesTheSameBits) {
   // The plain kernel and the faithful mode (hinge/fast/faithful.hpp).
   const std::vector<std::array<double, 12>> hinges = same_bits_hinges(test::cases(200));
   int compared = 0;
-  auto kernel = [](bool faithful, Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& d) {
+  auto kernel = [](bool faithful, Isa isa, const std::array<double, 12>& x, bool want_hessian,
+                   HingeDerivatives<double>& d) {
     return faithful ? faithful_hinge_derivatives(isa, x, want_hessian, d) : hinge_derivatives(isa, x, want_hessian, d);
   };
   for (const auto& x : hinges)
@@ -530,7 +556,8 @@ TEST(HingeKernel, EveryInstructionSetGivesTheSameBits) {
           HingeDerivatives<double> d;
           if (!kernel(faithful, isa, x, want_hessian, d)) continue;
           ++compared;
-          EXPECT_EQ(std::bit_cast<std::uint64_t>(d.theta), std::bit_cast<std::uint64_t>(base.theta)) << test::describe(x);
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(d.theta), std::bit_cast<std::uint64_t>(base.theta))
+              << test::describe(x);
           EXPECT_EQ(d.on_branch_cut, base.on_branch_cut);
           EXPECT_EQ(std::memcmp(d.grad.data(), base.grad.data(), sizeof(double) * 12), 0) << test::describe(x);
           EXPECT_EQ(std::memcmp(d.hess.data(), base.hess.data(), sizeof(double) * 144), 0) << test::describe(x);
@@ -572,12 +599,14 @@ TEST(HingeKernel, ManyAtOnceGiveTheBitsOfOneAtATime) {
     std::vector<HingeDerivatives<double>> many(hinges.size());
     hinge_derivatives<double>(hinges, many, want_hessian);
     for (std::size_t i = 0; i < hinges.size(); ++i)
-      EXPECT_TRUE(same_bits(many[i], hinge_derivatives<double>(hinges[i], want_hessian))) << i << ": " << test::describe(hinges[i]);
+      EXPECT_TRUE(same_bits(many[i], hinge_derivatives<double>(hinges[i], want_hessian)))
+          << i << ": " << test::describe(hinges[i]);
   }
   // The other scalar types evaluate one by one: the same.
   std::vector<HingeDerivatives<float>> floats(ordinary.size());
   hinge_derivatives<float>(ordinary, floats);
-  for (std::size_t i = 0; i < ordinary.size(); ++i) EXPECT_EQ(floats[i].hess, hinge_derivatives<float>(ordinary[i]).hess);
+  for (std::size_t i = 0; i < ordinary.size(); ++i)
+    EXPECT_EQ(floats[i].hess, hinge_derivatives<float>(ordinary[i]).hess);
 }
 
 TEST(HingeKernel, IntoTheCallersArraysGivesTheBitsOfHingeDerivatives) {
@@ -614,9 +643,11 @@ TEST(HingeKernel, ManyAtOnceThrowForTheFirstFailingHingeInOrder) {
   hinges[5] = zero_area;   // in the second place of a pair
   hinges[6] = not_finite;  // later: not reported
   std::vector<HingeDerivatives<double>> out(hinges.size());
-  EXPECT_EQ(input_error([&] { hinge_derivatives<double>(hinges, out); }), input_error([&] { hinge_derivatives<double>(zero_area); }));
+  EXPECT_EQ(input_error([&] { hinge_derivatives<double>(hinges, out); }),
+            input_error([&] { hinge_derivatives<double>(zero_area); }));
   hinges[4] = not_finite;  // now first, in the first place of a pair
-  EXPECT_EQ(input_error([&] { hinge_derivatives<double>(hinges, out); }), input_error([&] { hinge_derivatives<double>(not_finite); }));
+  EXPECT_EQ(input_error([&] { hinge_derivatives<double>(hinges, out); }),
+            input_error([&] { hinge_derivatives<double>(not_finite); }));
   out.pop_back();
   EXPECT_THROW(hinge_derivatives<double>(hinges, out), std::invalid_argument);
 }

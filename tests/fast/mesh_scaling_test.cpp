@@ -15,7 +15,6 @@
 namespace hinge::fast {
 namespace {
 
-
 Mesh scaled(const Mesh& m, int k) {
   Mesh s = m;
   for (auto& v : s.vertices)

@@ -7,13 +7,12 @@
 #include <cmath>
 
 #include "fast_support.hpp"
-#include "src/triangle_kernel.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
+#include "src/triangle_kernel.hpp"
 
 namespace hinge::fast {
 namespace {
-
 
 enum class Dagger { owner_only, none, both };
 
@@ -153,8 +152,8 @@ TEST(TriangleKernel, HingeGradientOfSmallTrianglesStaysFinite) {
     };
     Vec3<double> n, nt;
     double inv2A, inv2At;
-    face(0, 1, 2, n, inv2A);   // upper face (x0, x1, x2): its local edge 0 is the hinge edge x1 -> x2
-    face(3, 2, 1, nt, inv2At); // lower face (x3, x2, x1)
+    face(0, 1, 2, n, inv2A);    // upper face (x0, x1, x2): its local edge 0 is the hinge edge x1 -> x2
+    face(3, 2, 1, nt, inv2At);  // lower face (x3, x2, x1)
     TriangleGeometry<double> g;
     triangle_geometry(point(0), point(1), point(2), n, inv2A, g);
     std::array<Vec3<double>, 4> gr;

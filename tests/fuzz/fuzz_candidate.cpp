@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "fuzz_target.hpp"
-#include "hinge/io/eval_output.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/io/eval_output.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using hinge::fuzz::require;

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "fuzz_target.hpp"
-#include "hinge/io/jsonl.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/io/jsonl.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using hinge::fuzz::require;

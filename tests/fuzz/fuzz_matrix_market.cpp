@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "fuzz_target.hpp"
-#include "hinge/io/matrix_market.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/io/matrix_market.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using hinge::fuzz::require;

@@ -140,7 +140,8 @@ const std::string kValid = hinge_line("\"h\"", {"0", "1", "0", "0", "0", "0", "1
 std::vector<io::HingeLine> read_lines(const std::string& text, long first_line = 1) {
   std::istringstream in(text);
   std::vector<io::HingeLine> lines;
-  io::for_each_hinge_line(in, [&](const io::HingeLine& h) { lines.push_back(h); }, first_line);
+  io::for_each_hinge_line(
+      in, [&](const io::HingeLine& h) { lines.push_back(h); }, first_line);
   return lines;
 }
 
@@ -166,7 +167,8 @@ void expect_invalid(const io::HingeLine& h, long line) {
   ASSERT_TRUE(j.contains("error") && j["error"].is_string()) << j.dump();
   EXPECT_FALSE(j["error"].get<std::string>().empty());
   // The reason as read (invalid UTF-8 in it is replaced in the output: io::json_string).
-  const bool ascii = std::all_of(h.error.begin(), h.error.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+  const bool ascii =
+      std::all_of(h.error.begin(), h.error.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
   if (ascii) {
     EXPECT_EQ(j["error"].get<std::string>(), h.error);
   }
@@ -197,7 +199,8 @@ TEST(JsonlRead, ReadsEveryDoubleBackExactly) {
       ASSERT_TRUE(lines[l].x.has_value()) << "style " << style << ", line " << l + 1 << ": " << lines[l].error;
       for (std::size_t k = 0; k < 12; ++k) {
         const auto r = same_value(values[12 * l + k], (*lines[l].x)[k]);
-        if (!r && mismatches++ < 5) ADD_FAILURE() << "style " << style << ", line " << l + 1 << ", x[" << k << "]: " << r.message();
+        if (!r && mismatches++ < 5)
+          ADD_FAILURE() << "style " << style << ", line " << l + 1 << ", x[" << k << "]: " << r.message();
       }
     }
     EXPECT_EQ(mismatches, 0) << "style " << style;
@@ -222,8 +225,9 @@ TEST(JsonlRead, RoundsLongAndHalfwayDecimalsCorrectly) {
     double expected;
   };
   const std::vector<Case> cases = {
-      {half_denorm_min, 0.0},                                                           // tie: to even, 0
-      {mantissa + "1" + half_denorm_min.substr(half_denorm_min.find('e')), std::numeric_limits<double>::denorm_min()},  // just above
+      {half_denorm_min, 0.0},  // tie: to even, 0
+      {mantissa + "1" + half_denorm_min.substr(half_denorm_min.find('e')),
+       std::numeric_limits<double>::denorm_min()},  // just above
       {"2.4703282292062328e-324", std::numeric_limits<double>::denorm_min()},
       {"1.00000000000000011102230246251565404236316680908203125", 1.0},  // 1 + 2^-53: tie, to even
       {"1.00000000000000011102230246251565404236316680908203125001", std::nextafter(1.0, 2.0)},
@@ -257,7 +261,8 @@ TEST(JsonlRead, RoundsLongAndHalfwayDecimalsCorrectly) {
 }
 
 TEST(JsonlRead, NegativeZeroReadsAsTheValueZero) {
-  const std::vector<io::HingeLine> lines = read_lines(hinge_line("\"z\"", {"-0.0", "-0", "0", "0.0", "-0e5", "-0.000e-400", "1", "1", "1", "1", "1", "1"}));
+  const std::vector<io::HingeLine> lines =
+      read_lines(hinge_line("\"z\"", {"-0.0", "-0", "0", "0.0", "-0e5", "-0.000e-400", "1", "1", "1", "1", "1", "1"}));
   ASSERT_EQ(lines.size(), 1u);
   ASSERT_TRUE(lines[0].x.has_value()) << lines[0].error;
   for (int k = 0; k < 6; ++k) EXPECT_EQ((*lines[0].x)[k], 0.0) << "x[" << k << "]";
@@ -275,7 +280,8 @@ TEST(JsonlRead, IgnoresOtherFieldsAndKeepsTheCategoryString) {
   EXPECT_EQ((*lines[0].x)[1], 1.0);
   EXPECT_EQ((*lines[0].x)[10], -1.0);
   // A "category" that is not a string is no category, and no reason to reject the hinge.
-  const std::vector<io::HingeLine> other = read_lines(R"({"category": 7, "id": "h2", "x": [0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -1, 0]})");
+  const std::vector<io::HingeLine> other =
+      read_lines(R"({"category": 7, "id": "h2", "x": [0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -1, 0]})");
   ASSERT_EQ(other.size(), 1u);
   EXPECT_TRUE(other[0].x.has_value()) << other[0].error;
   EXPECT_EQ(other[0].category, "");
@@ -412,8 +418,8 @@ TEST(JsonlRead, AWrongCountOfCoordinatesGetsTheDocumentedMessage) {
   // docs/testing.md, Bad input 32.
   for (const std::string& x : {std::string("[]"), std::string("[1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]"),
                                std::string("[1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13]"), std::string("1"),
-                               std::string("\"0 1 0 0 0 0 1 0 0 0 -1 0\""), std::string("{\"0\": 1}"), std::string("null"),
-                               std::string("[[0, 1, 0], [0, 0, 0], [1, 0, 0], [0, -1, 0]]")}) {
+                               std::string("\"0 1 0 0 0 0 1 0 0 0 -1 0\""), std::string("{\"0\": 1}"),
+                               std::string("null"), std::string("[[0, 1, 0], [0, 0, 0], [1, 0, 0], [0, -1, 0]]")}) {
     SCOPED_TRACE(x);
     const std::vector<io::HingeLine> lines = read_lines("\n{\"id\": \"w\", \"x\": " + x + "}\n");
     ASSERT_EQ(lines.size(), 1u);
@@ -450,7 +456,8 @@ TEST(JsonlRead, ACoordinateThatIsNotANumberIsNamedByItsIndex) {
 
 TEST(JsonlRead, NanInfinityAndNonJsonNumberFormsAreNotValidJson) {
   // JSON has no NaN or infinity: such a line is not valid input (never a silent NaN).
-  for (const std::string bad : {"NaN", "nan", "-NaN", "Infinity", "-Infinity", "inf", "-inf", "+1", ".5", "1.", "01", "0x10", "1e", "--1"}) {
+  for (const std::string bad :
+       {"NaN", "nan", "-NaN", "Infinity", "-Infinity", "inf", "-inf", "+1", ".5", "1.", "01", "0x10", "1e", "--1"}) {
     std::vector<std::string> x = twelve("1");
     x[3] = bad;
     SCOPED_TRACE(bad);
@@ -499,8 +506,12 @@ TEST(JsonlRead, AnOverflowingNumberElsewhereLeavesStringsAndTheHingeAlone) {
 
 TEST(JsonlRead, NoLineEverGivesANaNCoordinate) {
   // Every line of a mixed file is either a hinge without a NaN or an invalid line with a reason.
-  const std::vector<std::string> texts = {kValid, "NaN", hinge_line("\"q\"", twelve("1e400")), hinge_line("\"q\"", twelve("-0")),
-                                          hinge_line("\"q\"", twelve("\"nan\"")), hinge_line("\"q\"", twelve("1e-400"))};
+  const std::vector<std::string> texts = {kValid,
+                                          "NaN",
+                                          hinge_line("\"q\"", twelve("1e400")),
+                                          hinge_line("\"q\"", twelve("-0")),
+                                          hinge_line("\"q\"", twelve("\"nan\"")),
+                                          hinge_line("\"q\"", twelve("1e-400"))};
   std::string text;
   for (const auto& t : texts) text += t + "\n";
   const std::vector<io::HingeLine> lines = read_lines(text);
@@ -518,13 +529,13 @@ TEST(JsonlRead, NoLineEverGivesANaNCoordinate) {
 // The loop of hinge eval: one output line per non-blank input line
 
 TEST(JsonlTransform, WritesOneLineForEveryNonBlankLineInOrder) {
-  const std::string input = kValid + "\n\n" +                                                        // 1: ok
-                            hinge_line("\"input-error\"", twelve("1")) + "\n" +                      // 3
-                            "not json\n" +                                                           // 4
-                            "   \n" +                                                                // 5: blank
-                            hinge_line("\"domain-error\"", twelve("2")) + "\r\n" +                   // 6
-                            R"({"id": "short", "x": [1]})" + "\n" +                                  // 7
-                            hinge_line("\"last\"", twelve("3"));                                     // 8, no newline
+  const std::string input = kValid + "\n\n" +                                       // 1: ok
+                            hinge_line("\"input-error\"", twelve("1")) + "\n" +     // 3
+                            "not json\n" +                                          // 4
+                            "   \n" +                                               // 5: blank
+                            hinge_line("\"domain-error\"", twelve("2")) + "\r\n" +  // 6
+                            R"({"id": "short", "x": [1]})" + "\n" +                 // 7
+                            hinge_line("\"last\"", twelve("3"));                    // 8, no newline
   std::istringstream in(input);
   std::ostringstream out;
   int after = 0;
@@ -551,8 +562,10 @@ TEST(JsonlTransform, WritesOneLineForEveryNonBlankLineInOrder) {
   EXPECT_TRUE(bad["id"].is_null());
   EXPECT_EQ(bad["line"], 4);
   EXPECT_TRUE(bad["error"].is_string());
-  EXPECT_EQ(Json::parse(got[3]), Json::parse(R"({"id": "domain-error", "error": "outside the range of double: test"})"));
-  EXPECT_EQ(Json::parse(got[4]), Json::parse(R"({"id": "short", "line": 7, "error": "\"x\" must be an array of 12 numbers"})"));
+  EXPECT_EQ(Json::parse(got[3]),
+            Json::parse(R"({"id": "domain-error", "error": "outside the range of double: test"})"));
+  EXPECT_EQ(Json::parse(got[4]),
+            Json::parse(R"({"id": "short", "line": 7, "error": "\"x\" must be an array of 12 numbers"})"));
   EXPECT_EQ(got[5], "RESULT \"last\" 3.0");
 }
 
@@ -722,12 +735,17 @@ TEST(Numbers, FormatDoubleIsTheShortestTextThatReadsBackExactly) {
     // Looks like a double: a point or an exponent, so that no reader takes it for an integer.
     const bool looks_double = s.find_first_of(".e") != std::string::npos;
     bool shortest = true;
-    const bool fixed_integral = s.find('e') == std::string::npos && s.size() > 2 && s.compare(s.size() - 2, 2, ".0") == 0;
+    const bool fixed_integral =
+        s.find('e') == std::string::npos && s.size() > 2 && s.compare(s.size() - 2, 2, ".0") == 0;
     if (fixed_integral) {
       // All the integer's digits: then no scientific form with the fewest digits may be shorter.
       const int d = fewest_digits_nearest(x);
       const int exponent = static_cast<int>(s.size()) - 2 - (x < 0) - 1;
-      const int scientific = (x < 0) + d + (d > 1) + 2 + (exponent >= 100 ? 3 : exponent >= 10 ? 2 : 1) + (exponent < 10);
+      const int scientific = (x < 0) + d + (d > 1) + 2 +
+                             (exponent >= 100  ? 3
+                              : exponent >= 10 ? 2
+                                               : 1) +
+                             (exponent < 10);
       shortest = static_cast<int>(s.size()) - 2 <= scientific || x == 0;
     } else {
       // No decimal with one significant digit fewer reads back; in particular not the nearest one.
@@ -739,8 +757,8 @@ TEST(Numbers, FormatDoubleIsTheShortestTextThatReadsBackExactly) {
       }
     }
     if ((!exact || !looks_double || !shortest) && failures++ < 5)
-      ADD_FAILURE() << g17(x) << " written as \"" << s << "\": exact " << exact << ", looks like a double " << looks_double
-                    << ", shortest " << shortest;
+      ADD_FAILURE() << g17(x) << " written as \"" << s << "\": exact " << exact << ", looks like a double "
+                    << looks_double << ", shortest " << shortest;
   }
   EXPECT_EQ(failures, 0);
 }
@@ -757,7 +775,8 @@ TEST(Numbers, AppendArrayWritesABracketedCommaSeparatedList) {
 
 TEST(Numbers, GradientTextRoundTripsBitForBit) {
   const std::vector<double> values = many_doubles(3000, 14);
-  const auto path = std::filesystem::temp_directory_path() / ("hinge_numbers_test_" + std::to_string(std::random_device{}()) + ".txt");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("hinge_numbers_test_" + std::to_string(std::random_device{}()) + ".txt");
   {
     std::ofstream out(path, std::ios::binary);
     io::write_numbers(out, values);
@@ -774,7 +793,8 @@ TEST(Numbers, GradientTextRoundTripsBitForBit) {
 
 TEST(Numbers, ReadNumbersReadsATokenThatIsNotANumberAsNaN) {
   // io/number.hpp: "a token that is not a number is read as NaN, for the caller to count as non-finite".
-  const auto path = std::filesystem::temp_directory_path() / ("hinge_numbers_test_" + std::to_string(std::random_device{}()) + ".txt");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("hinge_numbers_test_" + std::to_string(std::random_device{}()) + ".txt");
   {
     std::ofstream out(path, std::ios::binary);
     out << "1.5\nabc\n  -0.0\t2e-310 1.0x 0x10\n\n3\n";
@@ -827,8 +847,8 @@ std::string ok_line(const std::string& id, double theta) {
 }
 
 TEST(EvalOutputRead, ReadsResultsErrorsAndBlankLinesById) {
-  const auto results = read_results(ok_line("a", 0.5) + "\n\n  \r\n" + io::error_line("\"b\"", "degenerate hinge: why") +
-                                    "\r\n" + ok_line("c", -0.0));
+  const auto results = read_results(ok_line("a", 0.5) + "\n\n  \r\n" +
+                                    io::error_line("\"b\"", "degenerate hinge: why") + "\r\n" + ok_line("c", -0.0));
   ASSERT_EQ(results.size(), 3u);
   EXPECT_EQ(results.at("a").status, Status::ok);
   EXPECT_EQ(results.at("a").theta, 0.5);
@@ -841,7 +861,8 @@ TEST(EvalOutputRead, ReadsResultsErrorsAndBlankLinesById) {
 TEST(EvalOutputRead, ALineWithoutAReadableIdNamesTheFileAndLine) {
   // docs/testing.md, Bad input 43: "c.jsonl:1: not valid JSON, and no \"id\" found".
   EXPECT_EQ(read_results_error("not json at all\n"), "c.jsonl:1: not valid JSON, and no \"id\" found");
-  EXPECT_EQ(read_results_error(ok_line("a", 1) + "\n\n{\"theta\": NaN\n", "x.jsonl"), "x.jsonl:3: not valid JSON, and no \"id\" found");
+  EXPECT_EQ(read_results_error(ok_line("a", 1) + "\n\n{\"theta\": NaN\n", "x.jsonl"),
+            "x.jsonl:3: not valid JSON, and no \"id\" found");
   EXPECT_EQ(read_results_error("{\"id\": 5, \"theta\": NaN}\n"), "c.jsonl:1: not valid JSON, and no \"id\" found");
   // Valid JSON whose id is not a string, or that is no object: the message names the line too.
   EXPECT_TRUE(contains(read_results_error(ok_line("a", 1) + "\n{\"id\": 7, \"theta\": 1}\n"), "c.jsonl:2: "));
@@ -854,9 +875,11 @@ TEST(EvalOutputRead, ALineThatIsNotJsonButHasAnIdCountsAsNonFinite) {
   std::string hess = "[";
   for (int k = 0; k < 144; ++k) hess += (k ? ", " : "") + std::string(k == 7 ? "NaN" : "0.0");
   hess += "]";
-  const auto results = read_results("{\"id\": \"n1\", \"theta\": NaN}\n"
-                                    "{\"id\" : \"n2\", \"theta\": 1e400, \"grad\": []}\n"
-                                    "{\"id\": \"n3\", \"theta\": 1, \"grad\": [0,0,0,0,0,0,0,0,0,0,0,0], \"hess\": " + hess + "}\n");
+  const auto results = read_results(
+      "{\"id\": \"n1\", \"theta\": NaN}\n"
+      "{\"id\" : \"n2\", \"theta\": 1e400, \"grad\": []}\n"
+      "{\"id\": \"n3\", \"theta\": 1, \"grad\": [0,0,0,0,0,0,0,0,0,0,0,0], \"hess\": " +
+      hess + "}\n");
   ASSERT_EQ(results.size(), 3u);
   for (const char* id : {"n1", "n2", "n3"}) EXPECT_EQ(results.at(id).status, Status::nonfinite) << id;
 }
@@ -871,7 +894,8 @@ TEST(EvalOutputRead, NullNumbersAreNonFiniteAndMissingArraysMissing) {
   no_theta.erase("theta");
   Json string_theta = Json::parse(io::result_line("\"string-theta\"", r));
   string_theta["theta"] = "NaN";
-  const auto results = read_results(with_null.dump() + "\n" + short_hess.dump() + "\n" + no_theta.dump() + "\n" + string_theta.dump() + "\n");
+  const auto results = read_results(with_null.dump() + "\n" + short_hess.dump() + "\n" + no_theta.dump() + "\n" +
+                                    string_theta.dump() + "\n");
   ASSERT_EQ(results.size(), 4u);
   EXPECT_EQ(results.at("null-grad").status, Status::nonfinite);
   EXPECT_EQ(results.at("short-hess").status, Status::missing);
@@ -882,7 +906,8 @@ TEST(EvalOutputRead, NullNumbersAreNonFiniteAndMissingArraysMissing) {
 }
 
 TEST(EvalOutputRead, TheFirstLineOfAnIdCounts) {
-  const auto results = read_results(ok_line("dup", 1.0) + "\n" + ok_line("dup", 2.0) + "\n" + io::error_line("\"dup\"", "later") + "\n");
+  const auto results =
+      read_results(ok_line("dup", 1.0) + "\n" + ok_line("dup", 2.0) + "\n" + io::error_line("\"dup\"", "later") + "\n");
   ASSERT_EQ(results.size(), 1u);
   EXPECT_EQ(results.at("dup").status, Status::ok);
   EXPECT_EQ(results.at("dup").theta, 1.0);
@@ -927,7 +952,8 @@ TEST(EvalOutputRead, EvalOutputLineRoundTripsAResultAndWritesAnErrorForAnythingE
   nonfinite.theta = std::numeric_limits<double>::quiet_NaN();
   io::EvalOutput missing;
   const std::string text = io::eval_output_line("ok \"1\"", ok) + "\n" + io::eval_output_line("error", error) + "\n" +
-                           io::eval_output_line("nonfinite", nonfinite) + "\n" + io::eval_output_line("missing", missing) + "\n";
+                           io::eval_output_line("nonfinite", nonfinite) + "\n" +
+                           io::eval_output_line("missing", missing) + "\n";
   std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);) EXPECT_TRUE(Json::accept(line)) << line;
   const auto back = read_results(text);

@@ -76,13 +76,15 @@ void expect_same_values(const Sparse& expected, const Sparse& got) {
   int mismatches = 0;
   for (std::size_t k = 0; k < a.size(); ++k)
     if (!(a[k] == b[k]) && mismatches++ < 5)
-      ADD_FAILURE() << "(" << k / static_cast<std::size_t>(got.cols()) << ", " << k % static_cast<std::size_t>(got.cols())
-                    << "): expected " << g17(a[k]) << " (0x" << std::hex << bits(a[k]) << "), got " << g17(b[k]) << " (0x"
-                    << bits(b[k]) << std::dec << ")";
+      ADD_FAILURE() << "(" << k / static_cast<std::size_t>(got.cols()) << ", "
+                    << k % static_cast<std::size_t>(got.cols()) << "): expected " << g17(a[k]) << " (0x" << std::hex
+                    << bits(a[k]) << "), got " << g17(b[k]) << " (0x" << bits(b[k]) << std::dec << ")";
   EXPECT_EQ(mismatches, 0);
 }
 
-double value_at(const Sparse& m, Eigen::Index r, Eigen::Index c) { return dense_upper(m)[static_cast<std::size_t>(r * m.cols() + c)]; }
+double value_at(const Sparse& m, Eigen::Index r, Eigen::Index c) {
+  return dense_upper(m)[static_cast<std::size_t>(r * m.cols() + c)];
+}
 
 std::vector<double> hard_doubles() {
   using L = std::numeric_limits<double>;
@@ -164,7 +166,8 @@ const std::string kGeneral = "%%MatrixMarket matrix coordinate real general\n";
 
 TEST(MatrixMarketWrite, WritesTheHeaderTheCommentTheSizeAndTheLowerTriangle) {
   Sparse upper(6, 6);
-  std::vector<Eigen::Triplet<double>> t = {{0, 0, 1.0}, {0, 5, 0.1}, {1, 1, -0.0}, {2, 4, 5e-324}, {3, 3, -2.5}, {4, 5, 1e300}};
+  std::vector<Eigen::Triplet<double>> t = {{0, 0, 1.0},    {0, 5, 0.1},  {1, 1, -0.0},
+                                           {2, 4, 5e-324}, {3, 3, -2.5}, {4, 5, 1e300}};
   upper.setFromTriplets(t.begin(), t.end());
   const std::vector<std::string> lines = lines_of(written(upper, "the Hessian of E"));
   ASSERT_EQ(lines.size(), 3u + t.size());
@@ -253,11 +256,18 @@ TEST(MatrixMarketRead, AGeneralFileAveragesTheTwoTriangles) {
 TEST(MatrixMarketRead, AGeneralFileWithEqualTrianglesReadsNormalValuesExactly) {
   // A symmetric matrix written as general, both triangles: each value back exactly, the extremes included
   // (halving before adding cannot overflow at max).
-  const std::vector<double> values = {std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-                                      std::numeric_limits<double>::min(), std::nextafter(1.0, 0.0), 0.1,
-                                      1.0 / 3.0, 0.30000000000000004, -1.2345678901234567e-300, 1e23};
+  const std::vector<double> values = {std::numeric_limits<double>::max(),
+                                      -std::numeric_limits<double>::max(),
+                                      std::numeric_limits<double>::min(),
+                                      std::nextafter(1.0, 0.0),
+                                      0.1,
+                                      1.0 / 3.0,
+                                      0.30000000000000004,
+                                      -1.2345678901234567e-300,
+                                      1e23};
   const Eigen::Index n = static_cast<Eigen::Index>(values.size()) + 1;
-  std::string text = kGeneral + std::to_string(n) + " " + std::to_string(n) + " " + std::to_string(2 * values.size()) + "\n";
+  std::string text =
+      kGeneral + std::to_string(n) + " " + std::to_string(n) + " " + std::to_string(2 * values.size()) + "\n";
   for (std::size_t k = 0; k < values.size(); ++k) {
     text += "1 " + std::to_string(k + 2) + " " + g17(values[k]) + "\n";
     text += std::to_string(k + 2) + " 1 " + g17(values[k]) + "\n";
@@ -326,20 +336,23 @@ TEST(MatrixMarketRead, AValueThatIsNotANumberIsReadAsNaN) {
 
 TEST(MatrixMarketRead, RejectsAHeaderThatIsNotCoordinateRealSymmetricOrGeneral) {
   const std::string expected = "H.mtx: expected %%MatrixMarket matrix coordinate real symmetric|general";
-  for (const std::string header : {"", "%%MatrixMarket matrix array real general", "%%MatrixMarket matrix coordinate complex symmetric",
-                                   "%%MatrixMarket matrix coordinate integer general", "%%MatrixMarket matrix coordinate pattern symmetric",
-                                   "%%MatrixMarket vector coordinate real general", "MatrixMarket matrix coordinate real symmetric",
-                                   "% comment", "3 3 0", " %%MatrixMarket matrix coordinate real symmetric"}) {
+  for (const std::string header :
+       {"", "%%MatrixMarket matrix array real general", "%%MatrixMarket matrix coordinate complex symmetric",
+        "%%MatrixMarket matrix coordinate integer general", "%%MatrixMarket matrix coordinate pattern symmetric",
+        "%%MatrixMarket vector coordinate real general", "MatrixMarket matrix coordinate real symmetric", "% comment",
+        "3 3 0", " %%MatrixMarket matrix coordinate real symmetric"}) {
     EXPECT_EQ(read_error(header + "\n3 3 1\n1 1 1.0\n", 3), expected) << header;
   }
   EXPECT_EQ(read_error("", 3), expected) << "an empty file";
-  EXPECT_EQ(read_error("\n\n", 3, "other.mtx"), "other.mtx: expected %%MatrixMarket matrix coordinate real symmetric|general");
+  EXPECT_EQ(read_error("\n\n", 3, "other.mtx"),
+            "other.mtx: expected %%MatrixMarket matrix coordinate real symmetric|general");
 }
 
 TEST(MatrixMarketRead, RejectsAnotherSizeNamingTheExpectedOne) {
   for (const std::string size : {"11 12 0", "12 11 0", "13 13 0", "4 4 0", "12 12", "12", "", "twelve 12 0", "12 12 -1",
                                  "12.5 12 0", "-12 -12 0"}) {
-    EXPECT_EQ(read_error(kSymmetric + "% c\n" + size + "\n", 12), "H.mtx: expected a 12 x 12 matrix") << "'" << size << "'";
+    EXPECT_EQ(read_error(kSymmetric + "% c\n" + size + "\n", 12), "H.mtx: expected a 12 x 12 matrix")
+        << "'" << size << "'";
   }
   EXPECT_EQ(read_error(kSymmetric, 12), "H.mtx: expected a 12 x 12 matrix") << "no size line";
   EXPECT_EQ(read_error(kSymmetric + "% only comments\n%\n", 6, "m.mtx"), "m.mtx: expected a 6 x 6 matrix");
@@ -348,7 +361,8 @@ TEST(MatrixMarketRead, RejectsAnotherSizeNamingTheExpectedOne) {
 TEST(MatrixMarketRead, RejectsAnEntryOutOfRangeNamingTheEntry) {
   // The message names the entry's position in the entry list (1-based).
   for (const std::string bad : {"0 1", "1 0", "4 1", "1 4", "-1 2", "2 -1", "4 4", "99999999999999999999 1"}) {
-    EXPECT_EQ(read_error(kSymmetric + "3 3 3\n1 1 1.0\n2 2 1.0\n" + bad + " 1.0\n", 3), "H.mtx: entry 3 is unreadable or out of range")
+    EXPECT_EQ(read_error(kSymmetric + "3 3 3\n1 1 1.0\n2 2 1.0\n" + bad + " 1.0\n", 3),
+              "H.mtx: entry 3 is unreadable or out of range")
         << bad;
   }
   EXPECT_EQ(read_error(kGeneral + "% c\n3 3 2\n4 4 1.0\n1 1 1.0\n", 3), "H.mtx: entry 1 is unreadable or out of range");
@@ -363,7 +377,8 @@ TEST(MatrixMarketRead, RejectsATruncatedEntryListNamingTheFirstMissingEntry) {
 }
 
 TEST(MatrixMarketRead, ReadsAFileByPathAndNamesAMissingOne) {
-  const auto path = std::filesystem::temp_directory_path() / ("hinge_matrix_market_test_" + std::to_string(std::random_device{}()) + ".mtx");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("hinge_matrix_market_test_" + std::to_string(std::random_device{}()) + ".mtx");
   const Sparse upper = random_upper(12, 4, 21);
   {
     std::ofstream out(path, std::ios::binary);

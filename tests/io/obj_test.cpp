@@ -161,7 +161,8 @@ TEST(ObjRead, AcceptsPlusSignsCrlfCommentsWhitespaceAndOtherLines) {
 }
 
 TEST(ObjRead, KeepsNegativeZeroAndSubnormals) {
-  const Mesh m = read_text("v -0 -0.0 4.9406564584124654e-324\nv 2.2250738585072014e-308 1e-310 -1e-320\nv 1 1 1\nf 1 2 3\n");
+  const Mesh m =
+      read_text("v -0 -0.0 4.9406564584124654e-324\nv 2.2250738585072014e-308 1e-310 -1e-320\nv 1 1 1\nf 1 2 3\n");
   EXPECT_TRUE(std::signbit(m.vertices[0][0]));
   EXPECT_TRUE(std::signbit(m.vertices[0][1]));
   EXPECT_EQ(m.vertices[0][2], std::numeric_limits<double>::denorm_min());
@@ -232,8 +233,7 @@ TEST(ObjRead, RejectsAMeshWithNoFacesNamingTheFile) {
 
 TEST(ObjRead, ReadsFileByPathAndNamesMissingFile) {
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string path =
-      (dir / ("hinge_obj_test_" + std::to_string(std::random_device{}()) + ".obj")).string();
+  const std::string path = (dir / ("hinge_obj_test_" + std::to_string(std::random_device{}()) + ".obj")).string();
   {
     std::ofstream out(path, std::ios::binary);
     out << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3 1\n";

@@ -68,13 +68,15 @@ TEST(Scene, GridFollowsTheContract) {
 }
 
 TEST(Scene, AnUnknownKeyAnywhereIsAnErrorNamingIt) {
-  EXPECT_NE(error_of(replaced(kValid, "\"gravity\"", "\"gravty\"")).find("effects.gravty: unknown key"), std::string::npos);
+  EXPECT_NE(error_of(replaced(kValid, "\"gravity\"", "\"gravty\"")).find("effects.gravty: unknown key"),
+            std::string::npos);
   EXPECT_NE(error_of(replaced(kValid, "\"dt\"", "\"dtt\"")).find("solve.dtt"), std::string::npos);
   EXPECT_NE(error_of(replaced(kValid, "\"g\"", "\"G\"")).find("effects.gravity.G"), std::string::npos);
   EXPECT_NE(error_of(replaced(kValid, "\"plane\"", "\"plane\": \"xz\", \"sise\"")).find("mesh.grid.sise: unknown key"),
             std::string::npos);
   EXPECT_NE(error_of(replaced(kValid, "\"every\"", "\"evry\"")).find("output.evry"), std::string::npos);
-  EXPECT_NE(error_of(replaced(kValid, "\"name\"", "\"nam\"")).find("nam: unknown key (expected one of scene, name,"), std::string::npos);
+  EXPECT_NE(error_of(replaced(kValid, "\"name\"", "\"nam\"")).find("nam: unknown key (expected one of scene, name,"),
+            std::string::npos);
   EXPECT_NE(error_of(replaced(kValid, "\"name\": \"t\",", "\"name\": \"t\", \"extra\": 1,")).find("extra: unknown key"),
             std::string::npos);
 }
@@ -86,7 +88,8 @@ TEST(Scene, BadValuesAreErrorsNamingTheKey) {
     EXPECT_NE(e.find(what), std::string::npos) << e;
   };
   has(replaced(kValid, "\"density\": 1000", "\"density\": -1"), "material.density");
-  has(replaced(kValid, "\"poisson\": 0.25", "\"poisson\": 0.7"), "material.poisson: Poisson's ratio nu must be in (-1, 0.5], got 0.7");
+  has(replaced(kValid, "\"poisson\": 0.25", "\"poisson\": 0.7"),
+      "material.poisson: Poisson's ratio nu must be in (-1, 0.5], got 0.7");
   has(replaced(kValid, "[0, 2]", "[0, 6]"), "effects.pins.vertices[1]: vertex 6 out of range");
   has(replaced(kValid, "[0, 2]", "[0, 0]"), "listed twice");
   has(replaced(kValid, "\"dynamic\"", "\"static\""), "solve.dt: not allowed");

@@ -29,10 +29,10 @@
 #include <string_view>
 #include <vector>
 
-#include "hinge/fast/faithful.hpp"
-#include "hinge/methods/methods.hpp"
 #include "hinge/conformance/grading.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/fast/faithful.hpp"
+#include "hinge/methods/methods.hpp"
 
 namespace {
 
@@ -94,7 +94,8 @@ void PrintTo(const Combination& c, std::ostream* out) {
 std::string name_of(const ::testing::TestParamInfo<Combination>& info) {
   std::string n = std::string(hinge::methods::method_name(info.param.method)) + "_" + info.param.scalar +
                   (info.param.faithful ? "_faithful" : "");
-  std::replace_if(n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+  std::replace_if(
+      n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
   return n;
 }
 
@@ -118,7 +119,8 @@ TEST_P(HardFamilies, every_output_is_within_the_documented_bound_or_a_documented
   for (const conf::Expected& e : expected_cases()) {
     hinge::RoundedTheta got;
     try {
-      got = c.faithful ? hinge::fast::faithful_derivatives_rounded(e.input.x) : hinge::methods::evaluate_hinge(c.method, scalar, e.input.x);
+      got = c.faithful ? hinge::fast::faithful_derivatives_rounded(e.input.x)
+                       : hinge::methods::evaluate_hinge(c.method, scalar, e.input.x);
     } catch (const hinge::DomainError& error) {
       // Documented failures: float's exponent range (a result or an intermediate that overflows there, or
       // |N||Nt| that underflows: docs/hard-cases.md); an intermediate of autodiff or symbolic (no rescaling).
@@ -147,7 +149,9 @@ TEST_P(HardFamilies, every_output_is_within_the_documented_bound_or_a_documented
         double largest = 0, sum = 0;  // ||f||, scaled: the squares of 2^-600 underflow
         for (std::size_t i = 0; i < size[g]; ++i) largest = std::max(largest, std::fabs(want[g][i]));
         for (std::size_t i = 0; i < size[g] && largest > 0; ++i) sum += (want[g][i] / largest) * (want[g][i] / largest);
-        underflow = largest > 0 ? std::sqrt(static_cast<double>(size[g])) * (16 * 0x1p-150 / (largest * std::sqrt(sum))) / 0x1p-53 : 0;
+        underflow = largest > 0 ? std::sqrt(static_cast<double>(size[g])) *
+                                      (16 * 0x1p-150 / (largest * std::sqrt(sum))) / 0x1p-53
+                                : 0;
       }
       const double bound = stable ? fixed_bound : 1 + r * (16 + 4 * kappa) + underflow;
       if (claimed) {
@@ -157,15 +161,15 @@ TEST_P(HardFamilies, every_output_is_within_the_documented_bound_or_a_documented
       w[g] = std::max(w[g], error);
       if (report) {
         report << "{\"method\": \"" << hinge::methods::method_name(c.method) << "\", \"scalar\": \"" << c.scalar
-               << (c.faithful ? "-faithful" : "") << "\", \"family\": \"" << e.input.category << "\", \"group\": \"" << conf::group_names[g]
-               << "\", \"kappa\": " << kappa << ", \"error\": " << error << "}\n";
+               << (c.faithful ? "-faithful" : "") << "\", \"family\": \"" << e.input.category << "\", \"group\": \""
+               << conf::group_names[g] << "\", \"kappa\": " << kappa << ", \"error\": " << error << "}\n";
       }
     }
   }
   for (const auto& [family, v] : worst)
     std::printf("%-10s %-21s %-18s worst units of 2^-53: theta %.3g grad %.3g hess %.3g\n",
-                std::string(hinge::methods::method_name(c.method)).c_str(), (c.scalar + (c.faithful ? " faithful" : "")).c_str(),
-                family.c_str(), v[0], v[1], v[2]);
+                std::string(hinge::methods::method_name(c.method)).c_str(),
+                (c.scalar + (c.faithful ? " faithful" : "")).c_str(), family.c_str(), v[0], v[1], v[2]);
 }
 
 std::vector<Combination> combinations() {
@@ -182,7 +186,8 @@ INSTANTIATE_TEST_SUITE_P(Methods, HardFamilies, ::testing::ValuesIn(combinations
 TEST(HardFamilies, generator_draws_every_family_and_only_valid_hinges) {
   const std::vector<conf::Case> cases = conf::hard_cases(0x4a7dca5e, per_family());
   for (const std::string& family : conf::hard_families())
-    EXPECT_GE(std::count_if(cases.begin(), cases.end(), [&](const conf::Case& c) { return c.category == family; }), per_family() * 3 / 4)
+    EXPECT_GE(std::count_if(cases.begin(), cases.end(), [&](const conf::Case& c) { return c.category == family; }),
+              per_family() * 3 / 4)
         << family;
   EXPECT_EQ(cases.size(), expected_cases().size());
 }

@@ -144,8 +144,7 @@ TEST(Bounded, BoundsOnWellScaledOperandsAreAFewUnitsOf2ToTheMinus106) {
   // What lets the fast path decide: from exact operands near 1 a product, sum, reciprocal and square root
   // carry bounds below 2^-100 of the result (the analysis gives at most 7 u^2 for a product).
   const Bounded a(1.2345678901234567, 3.1e-17, 0), b(0.7654321098765432, -2.7e-17, 0);
-  for (const Bounded& r : {a * b, a + b, reciprocal(a), root(b)})
-    EXPECT_LT(r.err, std::ldexp(std::fabs(r.hi), -100));
+  for (const Bounded& r : {a * b, a + b, reciprocal(a), root(b)}) EXPECT_LT(r.err, std::ldexp(std::fabs(r.hi), -100));
 }
 
 }  // namespace

@@ -6,13 +6,12 @@
 #include <map>
 
 #include "hinge/conformance/inputs.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/reference/rounded.hpp"
-#include "hinge/core/errors.hpp"
 
 namespace hinge::oracle {
 namespace {
-
 
 std::map<std::pair<Eigen::Index, Eigen::Index>, double> entries(const Eigen::SparseMatrix<double>& m) {
   std::map<std::pair<Eigen::Index, Eigen::Index>, double> e;
@@ -29,13 +28,13 @@ TEST(MeshOracle, AgreesWithTheReferenceAt1024Bits) {
       p.model = model;
       p.k = 0.75;
       const CertifiedMesh c = certified_mesh(m.deformed, m.rest, t, p);
-      const RoundedMesh r =
-          reference::assemble_rounded({ScalarType::Kind::kind_mpfr, 1024}, m.deformed, m.rest, t, p);
+      const RoundedMesh r = reference::assemble_rounded({ScalarType::Kind::kind_mpfr, 1024}, m.deformed, m.rest, t, p);
       const std::string what = m.name + " " + std::string(model_name(model));
       EXPECT_TRUE(c.uncertified.empty()) << what;
       EXPECT_EQ(c.rounded.energy, r.energy) << what;
       ASSERT_EQ(c.rounded.gradient.size(), r.gradient.size()) << what;
-      for (std::size_t i = 0; i < r.gradient.size(); ++i) EXPECT_EQ(c.rounded.gradient[i], r.gradient[i]) << what << " " << i;
+      for (std::size_t i = 0; i < r.gradient.size(); ++i)
+        EXPECT_EQ(c.rounded.gradient[i], r.gradient[i]) << what << " " << i;
       const auto a = entries(c.rounded.hessian), b = entries(r.hessian);
       EXPECT_EQ(a.size(), b.size()) << what;
       for (const auto& [k, v] : b) {

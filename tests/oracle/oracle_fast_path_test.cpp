@@ -1,7 +1,8 @@
 // The oracle's fast path (oracle/src/fast_path.cpp, mesh_fast_path.cpp, proofs/oracle-fast-path.md): it
-// gives the doubles of the exact stage and the enclosures, bit for bit (for one hinge and for a mesh), on every conformance input, on the hard families and
-// on the committed worked examples; it decides almost every well-shaped hinge alone; and what it cannot
-// decide (exact zeros, the branch cut, degenerate hinges) goes on to the stages that can.
+// gives the doubles of the exact stage and the enclosures, bit for bit (for one hinge and for a mesh), on every
+// conformance input, on the hard families and on the committed worked examples; it decides almost every well-shaped
+// hinge alone; and what it cannot decide (exact zeros, the branch cut, degenerate hinges) goes on to the stages that
+// can.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -10,10 +11,10 @@
 #include <string>
 
 #include "hinge/conformance/inputs.hpp"
-#include "hinge/oracle/mesh.hpp"
-#include "hinge/oracle/oracle.hpp"
 #include "hinge/core/errors.hpp"
 #include "hinge/core/samples.hpp"
+#include "hinge/oracle/mesh.hpp"
+#include "hinge/oracle/oracle.hpp"
 #include "hinge/reference/evaluate.hpp"
 #include "support/same_results.hpp"
 
@@ -41,7 +42,8 @@ struct Tally {
 TEST(OracleFastPath, GivesTheIntervalPathsDoublesOnEveryConformanceInput) {
   Tally tally;
   for (const auto& c : conformance::inputs()) {
-    const CertifiedTheta with = certified_theta_derivatives(c.x), without = certified_theta_derivatives(c.x, without_fast_path());
+    const CertifiedTheta with = certified_theta_derivatives(c.x),
+                         without = certified_theta_derivatives(c.x, without_fast_path());
     EXPECT_EQ("", test::first_difference(with, without)) << c.id;
     tally.add(c.category, with.path);
   }
@@ -125,8 +127,7 @@ TEST(OracleFastPath, MeshFastPathGivesTheEnclosuresDoubles) {
   int fast = 0;
   for (const Case& m : cases) {
     const Topology t = build_topology(m.deformed);
-    for (Model model :
-         {Model::shells, Model::tan, Model::viscoelastic, Model::willmore}) {
+    for (Model model : {Model::shells, Model::tan, Model::viscoelastic, Model::willmore}) {
       EnergyParameters p;
       p.model = model;
       p.k = 0.75;

@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "hinge/conformance/inputs.hpp"
-#include "hinge/oracle/oracle.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/oracle/oracle.hpp"
 #include "hinge/reference/rounded.hpp"
 
 namespace hinge::oracle {
@@ -83,8 +83,10 @@ TEST(Oracle, ReproducesTheContractExamples) {
     const CertifiedTheta c = certified_theta_derivatives(inputs[k]["x"].get<X12>());
     EXPECT_TRUE(c.uncertified.empty());
     EXPECT_EQ(c.theta, want[k]["theta"].get<double>()) << want[k]["id"];
-    for (int i = 0; i < 12; ++i) EXPECT_EQ(c.grad[i], want[k]["grad"][i].get<double>()) << want[k]["id"] << " grad " << i;
-    for (int i = 0; i < 144; ++i) EXPECT_EQ(c.hess[i], want[k]["hess"][i].get<double>()) << want[k]["id"] << " hess " << i;
+    for (int i = 0; i < 12; ++i)
+      EXPECT_EQ(c.grad[i], want[k]["grad"][i].get<double>()) << want[k]["id"] << " grad " << i;
+    for (int i = 0; i < 144; ++i)
+      EXPECT_EQ(c.hess[i], want[k]["hess"][i].get<double>()) << want[k]["id"] << " hess " << i;
   }
 }
 
@@ -186,10 +188,10 @@ TEST(Oracle, OutputsOutsideTheRangeOfDoubleAreErrors) {
 
 TEST(Oracle, DegenerateAndNonFiniteInputsAreTheReferencesErrors) {
   const std::vector<X12> bad{
-      {0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0.5, -1, 0},                  // x1 == x2
-      {0.5, 0, 0, 0, 0, 0, 1, 0, 0, 0.5, -1, 0},                  // upper triangle collinear
-      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 2, 0, 0},                     // lower triangle collinear
-      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, -1, std::nan("")},       // not finite
+      {0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0.5, -1, 0},             // x1 == x2
+      {0.5, 0, 0, 0, 0, 0, 1, 0, 0, 0.5, -1, 0},             // upper triangle collinear
+      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 2, 0, 0},                // lower triangle collinear
+      {0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, -1, std::nan("")},  // not finite
   };
   for (const X12& x : bad) {
     std::string oracle_message, reference_message;

@@ -14,8 +14,7 @@ int main() {
   const auto reference = hinge::reference::theta_derivatives<double>(x);
   const auto fast = hinge::fast::hinge_derivatives<double>(x);
   const auto certified = hinge::oracle::certified_theta_derivatives(x);
-  std::printf("theta: reference %.17g, fast %.17g, oracle %.17g\n", reference.angle.theta, fast.theta,
-              certified.theta);
+  std::printf("theta: reference %.17g, fast %.17g, oracle %.17g\n", reference.angle.theta, fast.theta, certified.theta);
   // Both methods are within a few units of 2^-53 of the certified value on a well-shaped hinge
   // (docs/testing.md); 64 units leaves room for any compiler and still catches a wrong library.
   const double tolerance = 64 * 0x1p-53 * std::abs(certified.theta);

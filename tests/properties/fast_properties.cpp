@@ -17,7 +17,6 @@ inline void showValue(EdgeOrientation o, std::ostream& os) {
 namespace hinge::test {
 namespace {
 
-
 template <class S>
 fast::HingeDerivatives<S> fast_evaluate(const Coordinates& x) {
   return fast::hinge_derivatives<S>(x, true);
@@ -32,8 +31,10 @@ template <class S>
 bool finite(const fast::HingeDerivatives<S>& d) {
   using std::isfinite;
   if (!isfinite(d.theta)) return false;
-  for (const S& v : d.grad) if (!isfinite(v)) return false;
-  for (const S& v : d.hess.reshaped()) if (!isfinite(v)) return false;
+  for (const S& v : d.grad)
+    if (!isfinite(v)) return false;
+  for (const S& v : d.hess.reshaped())
+    if (!isfinite(v)) return false;
   return true;
 }
 
@@ -51,30 +52,34 @@ void agrees_with_reference(const HingeCase& h, const std::string& property) {
   auto report = [&](double units, double bound, const std::string& reason) {
     Report rep(property, h.x);
     rep.line("family " + h.family + " (" + h.recipe + ")");
-    rep.value("theta (fast)", f.theta).value("theta (reference)", r.angle.theta).value("theta (MPFR 256)", e.angle.theta);
+    rep.value("theta (fast)", f.theta)
+        .value("theta (reference)", r.angle.theta)
+        .value("theta (MPFR 256)", e.angle.theta);
     rep.values("grad (fast)", f.grad).values("grad (reference)", r.grad).values("grad (MPFR 256)", e.grad);
     rep.values("hess (fast)", f.hess).values("hess (reference)", r.hess).values("hess (MPFR 256)", e.hess);
     return rep.finish(units, bound, reason, f.hess, r.hess);
   };
   if (!finite(f)) RC_FAIL(report(INFINITY, 0, "a valid hinge must give finite results"));
   const Coordinates& x = h.x;
-  const int sign = hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]},
-                                           {x[9], x[10], x[11]});
+  const int sign =
+      hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}, {x[9], x[10], x[11]});
   if ((sign > 0 && f.theta < 0) || (sign < 0 && f.theta > 0) || (sign == 0 && f.theta != 0 && !f.on_branch_cut))
     RC_FAIL(report(INFINITY, 0, "theta must not have the sign opposite to (N x Nt) . e0"));
-  const double fast_error = std::max({scalar_units(f.theta, S(e.angle.theta), u, 1.0), normwise_units(f.grad, e.grad, u),
-                                      normwise_units(f.hess, e.hess, u)});
+  const double fast_error = std::max({scalar_units(f.theta, S(e.angle.theta), u, 1.0),
+                                      normwise_units(f.grad, e.grad, u), normwise_units(f.hess, e.hess, u)});
   const double fast_bound = fast_units<S>(kappa);
   RC_TAG(h.family);
   Measurements::get().record(property + " (fast vs MPFR) [per kappa_shape]", fast_error, shape_condition_number(h.x));
   check_units(property + " (fast vs MPFR)", fast_error, fast_bound, kappa,
               [&] { return report(fast_error, fast_bound, fast_reason<S>()); });
-  const double between = std::max({scalar_units(f.theta, r.angle.theta, u, 1.0), normwise_units_between(f.grad, r.grad, u),
-                                   normwise_units_between(f.hess, r.hess, u)});
+  const double between =
+      std::max({scalar_units(f.theta, r.angle.theta, u, 1.0), normwise_units_between(f.grad, r.grad, u),
+                normwise_units_between(f.hess, r.hess, u)});
   const double bound = fast_bound + reference_units<S>(kappa);
   check_units(property + " (fast vs reference)", between, bound, kappa, [&] {
-    return report(between, bound, "each within its bound of the exact result: (" + fast_reason<S>() + ") + (" +
-                                      reference_reason<S>() + ")");
+    return report(
+        between, bound,
+        "each within its bound of the exact result: (" + fast_reason<S>() + ") + (" + reference_reason<S>() + ")");
   });
 }
 RC_GTEST_PROP(FastDouble, AgreesWithReferenceOnWellShapedHinges, ()) {
@@ -98,8 +103,8 @@ RC_GTEST_PROP(FastDouble, NearDegenerateWithinShapeCondition, ()) {
   const double u = u_of<double>(), kappa_shape = shape_condition_number(h.x);
   const auto f = fast_evaluate<double>(h.x);
   const auto e = exact_derivatives(h.x);
-  const double units = std::max({scalar_units(f.theta, double(e.angle.theta), u, 1.0), normwise_units(f.grad, e.grad, u),
-                                 normwise_units(f.hess, e.hess, u)});
+  const double units = std::max({scalar_units(f.theta, double(e.angle.theta), u, 1.0),
+                                 normwise_units(f.grad, e.grad, u), normwise_units(f.hess, e.hess, u)});
   const double bound = fast_units<double>(kappa_shape);
   RC_TAG(h.family);
   check_units("fast double: accuracy within c kappa_shape", units, bound, kappa_shape, [&] {
@@ -125,8 +130,8 @@ void expect_same_bits(const std::string& property, const Coordinates& x, const C
   const bool same = got.theta == theta && got.grad == grad && got.hess == hess;
   Measurements::get().record(property, same ? 0 : 1, 0);
   if (!same) {
-    const double units = std::max(normwise_units_between(got.hess, hess, u_of<S>()),
-                                  normwise_units_between(got.grad, grad, u_of<S>()));
+    const double units =
+        std::max(normwise_units_between(got.hess, hess, u_of<S>()), normwise_units_between(got.grad, grad, u_of<S>()));
     Report r(property, x);
     r.line("second input " + describe(y));
     r.value("theta (expected)", theta).value("theta", got.theta);
@@ -268,8 +273,8 @@ RC_GTEST_PROP(FastBin128, FoldedHingeHasThetaPlusPiExactly, ()) {
 // Mesh assembly (Algorithm 2, with its own rest state, Algorithm 1) against hinge::reference::assemble.
 // ---------------------------------------------------------------------------------------------------
 template <class S>
-MeshDerivatives<S> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology, Model model,
-                                        double k, fast::EdgeOrientation orientation) {
+MeshDerivatives<S> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology, Model model, double k,
+                             fast::EdgeOrientation orientation) {
   fast::Assembler<S> a(topology, orientation);
   const auto coefficients = a.rest_state(rest, EnergyParameters{model, k, 0});
   return a.evaluate(deformed, coefficients, model);
@@ -284,7 +289,8 @@ void mesh_agrees(const MeshCase& mc, Model model, double k, fast::EdgeOrientatio
   const auto f = fast_mesh<S>(mc.deformed, mc.rest, ref.topology, model, k, orientation);
   RC_TAG(std::string(model_name(model)));
   const Eigen::Matrix<S, Eigen::Dynamic, 1> g = f.gradient;
-  expect_same_mesh(property, mc, ref, f.energy, g, dense(f.hessian), fast_mesh_units<S>(ref.kappa) + mesh_units<S>(ref.kappa),
+  expect_same_mesh(property, mc, ref, f.energy, g, dense(f.hessian),
+                   fast_mesh_units<S>(ref.kappa) + mesh_units<S>(ref.kappa),
                    "each within its bound: (" + fast_mesh_reason<S>() + ") + (" + mesh_reason<S>() + ")");
 }
 RC_GTEST_PROP(FastMeshDouble, AssemblyAgreesWithReference, ()) {

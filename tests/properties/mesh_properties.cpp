@@ -10,7 +10,6 @@
 namespace hinge::test {
 namespace {
 
-
 // ---------------------------------------------------------------------------------------------------
 // Energy derivatives (eqs. (2)-(3)) of one hinge (a two-face mesh) against central differences of an
 // independent energy: psi(theta) of docs/contract.md and docs/quantities.md written here, with the
@@ -34,7 +33,8 @@ PsiSeries psi_series(Model model, const mpfr& k, const mpfr& a, const mpfr& thet
       const mpfr d = theta - theta_bar;
       return {ka * d * d, 2 * ka * d, 2 * ka, mpfr(0)};
     }
-    case Model::tan: {  // k a (phi - phi_bar)^2, phi = 2 tan(theta/2): phi' = 1 + t^2, phi'' = t phi', phi''' = phi' (1 + 3 t^2) / 2
+    case Model::tan: {  // k a (phi - phi_bar)^2, phi = 2 tan(theta/2): phi' = 1 + t^2, phi'' = t phi', phi''' = phi' (1
+                        // + 3 t^2) / 2
       const mpfr t = tan(theta / 2), e = 2 * t - 2 * tan(theta_bar / 2);
       const mpfr p1 = 1 + t * t, p2 = t * p1, p3 = p1 * (1 + 3 * t * t) / 2;
       return {ka * e * e, 2 * ka * e * p1, 2 * ka * (p1 * p1 + e * p2), 2 * ka * (3 * p1 * p2 + e * p3)};
@@ -101,7 +101,8 @@ void energy_finite_differences(const HingeCase& deformed, const HingeCase& rest,
   const auto e = exact_derivatives(deformed.x);
   const double w = to_double(mpfr(abs(ps.d1) + abs(ps.d2) + abs(ps.d3)));
   const double g = to_double(mpfr(e.grad.norm())), h = to_double(mpfr(e.hess.norm()));
-  const double energy_scale = to_double(mpfr(abs(ps.value))) + w, gradient_scale = w * g, hessian_scale = w * (h + g * g);
+  const double energy_scale = to_double(mpfr(abs(ps.value))) + w, gradient_scale = w * g,
+               hessian_scale = w * (h + g * g);
   const double units = std::max({scalar_units(got.energy, S(fd.theta), u, energy_scale),
                                  normwise_units_between(grad, fd.grad.template cast<S>().eval(), u, gradient_scale),
                                  normwise_units_between(hess, fd.hess.template cast<S>().eval(), u, hessian_scale)});
@@ -109,8 +110,7 @@ void energy_finite_differences(const HingeCase& deformed, const HingeCase& rest,
   RC_TAG(std::string(model_name(model)));
   check_units(property, units, bound, kappa, [&] {
     Report rep(property, deformed.x);
-    rep.line("rest " + describe(rest.x) + ", model " + std::string(model_name(model)) + ", k = " +
-             show_exactly(k));
+    rep.line("rest " + describe(rest.x) + ", model " + std::string(model_name(model)) + ", k = " + show_exactly(k));
     rep.value("energy", got.energy).value("energy (independent, MPFR 400)", fd.theta);
     rep.values("gradient", grad).values("gradient (central differences)", fd.grad);
     rep.values("hessian", hess).values("hessian (central differences)", fd.hess);

@@ -50,8 +50,8 @@ struct MeshEvaluation {
 
 // The scales and theta per hinge, from the reference in double (sizes only).
 template <class S>
-void measure_scales(const Mesh& deformed, const std::vector<HingeCoefficients<double>>& coefficients,
-                    Model model, MeshEvaluation<S>& out) {
+void measure_scales(const Mesh& deformed, const std::vector<HingeCoefficients<double>>& coefficients, Model model,
+                    MeshEvaluation<S>& out) {
   out.theta.clear();
   for (std::size_t i = 0; i < out.topology.hinges.size(); ++i) {
     const Coordinates x = hinge_coordinates(deformed, out.topology.hinges[i]);

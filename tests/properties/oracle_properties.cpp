@@ -52,7 +52,9 @@ void hinge_same_either_way(const HingeCase& h) {
                   [&](Report& rep) { rep.line("family " + h.family + " (" + h.recipe + "), input " + describe(h.x)); });
 }
 
-RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnAnyHinge, ()) { hinge_same_either_way(*gen::any_hinge(wide_scales)); }
+RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnAnyHinge, ()) {
+  hinge_same_either_way(*gen::any_hinge(wide_scales));
+}
 
 RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnFlatAndFoldedHinges, ()) {
   hinge_same_either_way(*gen::coplanar_hinge(*rc::gen::arbitrary<bool>()));
@@ -67,10 +69,10 @@ RC_GTEST_PROP(OracleFastPath, GivesTheEnclosuresDoublesOnAnyMesh, ()) {
   p.k = *gen::uniform(0.5, 2);
   p.k_d_over_dt = 0.25;
   const Topology t = build_topology(mc.deformed);
-  same_either_way([&](const oracle::Options& o) { return oracle::certified_mesh(mc.deformed, mc.rest, t, p, want_all, o); },
-                  "oracle: the mesh fast path gives the enclosures' doubles", [&](Report& rep) {
-                    rep.line(mc.family + " mesh, " + std::string(model_name(p.model)));
-                  });
+  same_either_way(
+      [&](const oracle::Options& o) { return oracle::certified_mesh(mc.deformed, mc.rest, t, p, want_all, o); },
+      "oracle: the mesh fast path gives the enclosures' doubles",
+      [&](Report& rep) { rep.line(mc.family + " mesh, " + std::string(model_name(p.model))); });
 }
 
 }  // namespace

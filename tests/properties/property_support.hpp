@@ -82,8 +82,8 @@ struct Report {
   std::ostringstream text;
   explicit Report(const std::string& property) { text << property << " failed\n"; }
   Report(const std::string& property, const Coordinates& x) {
-    text << property << " failed\n  input " << describe(x) << "\n  kappa = " << condition_number(x)
-         << " (kappa_shape " << shape_condition_number(x) << ", kappa_angle " << angle_condition_number(x) << ")\n";
+    text << property << " failed\n  input " << describe(x) << "\n  kappa = " << condition_number(x) << " (kappa_shape "
+         << shape_condition_number(x) << ", kappa_angle " << angle_condition_number(x) << ")\n";
   }
   template <class T>
   Report& value(const std::string& name, const T& v) {
@@ -108,8 +108,8 @@ struct Report {
       const double d = ulps_apart(to_double(a.reshaped()[i]), to_double(b.reshaped()[i]));
       if (d > worst_ulps) worst_ulps = d, worst = i;
     }
-    text << "  error " << units << " units of u > bound " << bound << " (" << reason << ")\n  worst entry "
-         << worst << " (row-major " << worst / std::max<Eigen::Index>(a.cols(), 1) << ", "
+    text << "  error " << units << " units of u > bound " << bound << " (" << reason << ")\n  worst entry " << worst
+         << " (row-major " << worst / std::max<Eigen::Index>(a.cols(), 1) << ", "
          << worst % std::max<Eigen::Index>(a.cols(), 1) << "): " << show_exactly(a.reshaped()[worst]) << " vs "
          << show_exactly(b.reshaped()[worst]) << ", " << worst_ulps << " ulps of double apart\n  " << replay_hint();
     return text.str();

@@ -36,8 +36,10 @@ template <class S>
 bool finite(const Derivatives<S>& d) {
   using std::isfinite;
   if (!isfinite(d.angle.theta)) return false;
-  for (const S& v : d.grad) if (!isfinite(v)) return false;
-  for (const S& v : d.hess.reshaped()) if (!isfinite(v)) return false;
+  for (const S& v : d.grad)
+    if (!isfinite(v)) return false;
+  for (const S& v : d.hess.reshaped())
+    if (!isfinite(v)) return false;
   return true;
 }
 
@@ -102,9 +104,9 @@ void expect_within(const std::string& property, const Coordinates& x, const Tran
                    double kappa) {
   const double u = u_of<S>();
   const Transformed<S> g = plain(got);
-  const double units = std::max({scalar_units(g.theta, expected.theta, u, 1.0),
-                                 normwise_units_between(g.grad, expected.grad, u),
-                                 normwise_units_between(g.hess, expected.hess, u)});
+  const double units =
+      std::max({scalar_units(g.theta, expected.theta, u, 1.0), normwise_units_between(g.grad, expected.grad, u),
+                normwise_units_between(g.hess, expected.hess, u)});
   check_units(property, units, bound, kappa, [&] {
     return compare_report<S>(property, x, expected, y, g).finish(units, bound, reason, g.hess, expected.hess);
   });
@@ -130,11 +132,11 @@ void accuracy(const HingeCase& h, const std::string& property) {
   if (!finite(d)) RC_FAIL(report(INFINITY, 0, "a valid hinge must give finite results"));
   // The branch: theta has the exact sign of (N x Nt) . e0 (docs/contract.md), +pi on the cut.
   const Coordinates& x = h.x;
-  const int sign = hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]},
-                                           {x[9], x[10], x[11]});
+  const int sign =
+      hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}, {x[9], x[10], x[11]});
   // (A near-flat theta below the rounding level may come out as 0: only the opposite sign is wrong.)
-  const bool branch_ok = sign == 0 ? (d.angle.theta == 0 || d.angle.on_branch_cut)
-                                   : (sign > 0 ? d.angle.theta >= 0 : d.angle.theta <= 0);
+  const bool branch_ok =
+      sign == 0 ? (d.angle.theta == 0 || d.angle.on_branch_cut) : (sign > 0 ? d.angle.theta >= 0 : d.angle.theta <= 0);
   if (!branch_ok) RC_FAIL(report(INFINITY, 0, "theta must not have the sign opposite to (N x Nt) . e0"));
   const double bound = reference_units<S>(kappa);
   const double units = std::max({scalar_units(d.angle.theta, S(e.angle.theta), u, 1.0),
@@ -250,8 +252,8 @@ void axis_permutation(const HingeCase& h, const Motion& m, const std::string& pr
   const Coordinates y = apply_motion(m, h.x);
   const double kappa = condition_number(h.x);
   expect_within<S>(property, h.x, transform(evaluate<S>(h.x), block_diagonal(m.R), m.det), y, evaluate<S>(y),
-                   2 * reference_units<S>(kappa), "two evaluations of one exact result: 2 x (" + reference_reason<S>() + ")",
-                   kappa);
+                   2 * reference_units<S>(kappa),
+                   "two evaluations of one exact result: 2 x (" + reference_reason<S>() + ")", kappa);
 }
 RC_GTEST_PROP(ReferenceDouble, AxisPermutationWithinTwiceTheBound, ()) {
   axis_permutation<double>(*gen::any_hinge(wide_scales), *gen::axis_permutation(), name<double>("axis permutation"));
@@ -412,8 +414,12 @@ void exact_translation(const std::string& property) {
   RC_PRE(valid_hinge(x));
   expect_bit_exact<S>(property, x, plain(evaluate<S>(x)), y, evaluate<S>(y));
 }
-RC_GTEST_PROP(ReferenceDouble, ExactTranslationIsBitExact, ()) { exact_translation<double>(name<double>("exact translation")); }
-RC_GTEST_PROP(ReferenceBin128, ExactTranslationIsBitExact, ()) { exact_translation<bin128>(name<bin128>("exact translation")); }
+RC_GTEST_PROP(ReferenceDouble, ExactTranslationIsBitExact, ()) {
+  exact_translation<double>(name<double>("exact translation"));
+}
+RC_GTEST_PROP(ReferenceBin128, ExactTranslationIsBitExact, ()) {
+  exact_translation<bin128>(name<bin128>("exact translation"));
+}
 
 // ---------------------------------------------------------------------------------------------------
 // Relabellings. (x3, x2, x1, x0) is the same hinge: N and Nt exchange, e0 reverses, so (N x Nt) . e0
@@ -428,8 +434,8 @@ void relabelling(const HingeCase& h, bool reverse, const std::string& property) 
   const auto P = vertex_permutation(reverse ? std::array<int, 4>{0, 2, 1, 3} : std::array<int, 4>{3, 2, 1, 0});
   const double kappa = condition_number(h.x);
   expect_within<S>(property, h.x, transform(evaluate<S>(h.x), P, reverse ? -1 : 1), y, evaluate<S>(y),
-                   2 * reference_units<S>(kappa), "two evaluations of one exact result: 2 x (" + reference_reason<S>() + ")",
-                   kappa);
+                   2 * reference_units<S>(kappa),
+                   "two evaluations of one exact result: 2 x (" + reference_reason<S>() + ")", kappa);
 }
 RC_GTEST_PROP(ReferenceDouble, RelabellingX0X3AndX1X2LeavesThetaUnchanged, ()) {
   relabelling<double>(*gen::any_hinge(wide_scales), false, name<double>("relabelling (x3, x2, x1, x0)"));
@@ -454,7 +460,8 @@ void finite_differences(const HingeCase& h, const std::string& property) {
   const double u = u_of<S>(), kappa = condition_number(h.x);
   const Derivatives<S> d = evaluate<S>(h.x);
   RC_PRE(!d.angle.on_branch_cut);
-  const Independent fd = test::finite_differences(h.x, [](const std::array<mpfr, 12>& p) { return independent_theta(p); });
+  const Independent fd =
+      test::finite_differences(h.x, [](const std::array<mpfr, 12>& p) { return independent_theta(p); });
   const double bound = reference_units<S>(kappa);
   const double units = std::max({scalar_units(d.angle.theta, S(fd.theta), u, 1.0), normwise_units(d.grad, fd.grad, u),
                                  normwise_units(d.hess, fd.hess, u)});

@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "hinge/reference/assemble.hpp"
 #include "hinge/core/errors.hpp"
+#include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate.hpp"
 
 namespace hinge::reference {
@@ -18,7 +18,8 @@ Mesh bumpy_grid(int n, unsigned seed) {
   std::uniform_real_distribution<double> jitter(-0.2, 0.2);
   Mesh m;
   for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) m.vertices.push_back({i + jitter(rng), j + jitter(rng), std::sin(i * 0.9) * std::cos(j * 0.7) + jitter(rng)});
+    for (int i = 0; i < n; ++i)
+      m.vertices.push_back({i + jitter(rng), j + jitter(rng), std::sin(i * 0.9) * std::cos(j * 0.7) + jitter(rng)});
   auto v = [n](int i, int j) { return static_cast<Index>(j * n + i); };
   for (int j = 0; j + 1 < n; ++j)
     for (int i = 0; i + 1 < n; ++i) {
@@ -49,7 +50,8 @@ TEST(Assemble, GradientMatchesFiniteDifferencesOfTheEnergy) {
         plus.vertices[v][k] += h;
         minus.vertices[v][k] -= h;
         const mpfr fd = (assemble<mpfr>(plus, t, c, model, want_energy).energy -
-                         assemble<mpfr>(minus, t, c, model, want_energy).energy) / (2 * h);
+                         assemble<mpfr>(minus, t, c, model, want_energy).energy) /
+                        (2 * h);
         EXPECT_LT(to_double(abs(fd - m.gradient[3 * v + k])), 1e-15 * (1 + to_double(abs(m.energy))))
             << model_name(model) << " vertex " << v << " coordinate " << k;
       }
@@ -66,7 +68,8 @@ TEST(Assemble, HessianIsTheSumOfHingeHessians) {
     const auto d = theta_derivatives<double>(hinge_coordinates(deformed, t.hinges[i]));
     const auto H = energy_hessian(psi(Model::tan, c[i], d.angle), d.grad, d.hess);
     for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) dense.block<3, 3>(3 * t.hinges[i].x[a], 3 * t.hinges[i].x[b]) += H.block<3, 3>(3 * a, 3 * b);
+      for (int b = 0; b < 4; ++b)
+        dense.block<3, 3>(3 * t.hinges[i].x[a], 3 * t.hinges[i].x[b]) += H.block<3, 3>(3 * a, 3 * b);
   }
   const Eigen::SparseMatrix<double> full = m.hessian.selfadjointView<Eigen::Upper>();
   const Eigen::MatrixXd assembled(full);

@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "hinge/core/energy.hpp"
-#include "hinge/reference/hinge_energy.hpp"
 #include "hinge/reference/evaluate.hpp"
+#include "hinge/reference/hinge_energy.hpp"
 #include "support/hinges.hpp"
 
 namespace hinge::reference {

@@ -105,7 +105,8 @@ TEST(Effects, DampingDerivativesMatchFiniteDifferences) {
   for (auto treatment : {HessianTreatment::exact, HessianTreatment::projected}) {
     s.solve.hessian = treatment;
     const Mesh start = bent(s.mesh, 1.6);
-    expect_derivatives_match_finite_differences(s, bent(s.mesh, 2.0), treatment == HessianTreatment::exact, &start, 0.01);
+    expect_derivatives_match_finite_differences(s, bent(s.mesh, 2.0), treatment == HessianTreatment::exact, &start,
+                                                0.01);
   }
 }
 

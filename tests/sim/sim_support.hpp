@@ -19,7 +19,6 @@ namespace hinge::sim::test {
 // k from the material by eq. (11), as a scene without "k" gets it.
 inline double stiffness(const Material& m) { return bending_stiffness(m.young, m.poisson, m.thickness); }
 
-
 constexpr double u = std::numeric_limits<double>::epsilon() / 2;  // unit roundoff of double
 
 // A cloth of nx x ny vertices, lx x ly metres, in the xy plane at height z; material of a light cloth.

@@ -50,7 +50,8 @@ TEST(Simulation, GravityAloneIsExactFreeFallAndRunsGravityAlone) {
   for (std::size_t n = 1; n < t.frames.size(); ++n) {
     for (Eigen::Index d = 0; d < x.size(); ++d) v[d] += s.solve.dt * s.gravity->g[static_cast<std::size_t>(d % 3)];
     x += s.solve.dt * v;
-    EXPECT_LE((t.frames[n] - x).cwiseAbs().maxCoeff(), 4 * static_cast<double>(n * n) * u * x.cwiseAbs().maxCoeff()) << n;
+    EXPECT_LE((t.frames[n] - x).cwiseAbs().maxCoeff(), 4 * static_cast<double>(n * n) * u * x.cwiseAbs().maxCoeff())
+        << n;
   }
   EXPECT_EQ(t.summary.energy.size(), 1u);
   EXPECT_EQ(t.summary.bending_share, 0);
@@ -103,8 +104,9 @@ TEST(Simulation, ADampedRunLosesEnergyEveryStepAndMoreThanAnUndampedOne) {
   const Trajectory t = run(s);
   ASSERT_TRUE(t.summary.ok && undamped.summary.ok) << t.summary.reason << undamped.summary.reason;
   auto energy = [&](const Trajectory& r, std::size_t n) {
-    return total_energy(s, r.frames[n], n ? Eigen::VectorXd((r.frames[n] - r.frames[n - 1]) / s.solve.dt)
-                                          : Eigen::VectorXd::Zero(r.frames[0].size()));
+    return total_energy(
+        s, r.frames[n],
+        n ? Eigen::VectorXd((r.frames[n] - r.frames[n - 1]) / s.solve.dt) : Eigen::VectorXd::Zero(r.frames[0].size()));
   };
   double previous = energy(t, 0);
   for (std::size_t n = 1; n < t.frames.size(); ++n) {
@@ -150,7 +152,9 @@ TEST(Simulation, APinnedClothComesToRestAtItsStaticEquilibriumAndStays) {
   // rest; 1e-6 m (5e-6 of its size) bounds that with margin.
   for (Eigen::Index v = 0; v < 25; ++v) {
     EXPECT_NEAR(x[3 * v + 2], e[3 * v + 2], 1e-6) << v;
-    EXPECT_NEAR(std::hypot(x[3 * v] - x[0], x[3 * v + 1] - x[1]), std::hypot(e[3 * v] - e[0], e[3 * v + 1] - e[1]), 1e-6) << v;
+    EXPECT_NEAR(std::hypot(x[3 * v] - x[0], x[3 * v + 1] - x[1]), std::hypot(e[3 * v] - e[0], e[3 * v + 1] - e[1]),
+                1e-6)
+        << v;
   }
 }
 

@@ -7,7 +7,13 @@
 
 namespace hinge::test {
 
-enum class Setting { flush_to_zero, denormals_are_zero, round_upward_sse, round_toward_zero_everywhere, x87_double_precision };
+enum class Setting {
+  flush_to_zero,
+  denormals_are_zero,
+  round_upward_sse,
+  round_toward_zero_everywhere,
+  x87_double_precision
+};
 
 class ScopedFpEnvironment {
  public:
@@ -31,7 +37,8 @@ class ScopedFpEnvironment {
   ScopedFpEnvironment& operator=(const ScopedFpEnvironment&) = delete;
 };
 
-inline constexpr Setting kAllSettings[] = {Setting::flush_to_zero, Setting::denormals_are_zero, Setting::round_upward_sse,
-                                           Setting::round_toward_zero_everywhere, Setting::x87_double_precision};
+inline constexpr Setting kAllSettings[] = {Setting::flush_to_zero, Setting::denormals_are_zero,
+                                           Setting::round_upward_sse, Setting::round_toward_zero_everywhere,
+                                           Setting::x87_double_precision};
 
 }  // namespace hinge::test

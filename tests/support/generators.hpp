@@ -31,9 +31,9 @@
 #include <utility>
 #include <vector>
 
-#include "hinge/reference/evaluate.hpp"
 #include "hinge/core/mesh.hpp"
 #include "hinge/core/predicates.hpp"
+#include "hinge/reference/evaluate.hpp"
 #include "support/tolerance.hpp"
 
 namespace hinge::test {
@@ -174,7 +174,7 @@ inline rc::Gen<Motion> general_motion(bool reflections = false) {
     const long double w = q[0], i = q[1], j = q[2], k = q[3];
     Matrix3l R;
     R << 1 - 2 * (j * j + k * k), 2 * (i * j - w * k), 2 * (i * k + w * j),  //
-        2 * (i * j + w * k), 1 - 2 * (i * i + k * k), 2 * (j * k - w * i),    //
+        2 * (i * j + w * k), 1 - 2 * (i * i + k * k), 2 * (j * k - w * i),   //
         2 * (i * k - w * j), 2 * (j * k + w * i), 1 - 2 * (i * i + j * j);
     const bool reflect = reflections && *rc::gen::arbitrary<bool>();
     if (reflect) R.col(2) = -R.col(2);
@@ -210,9 +210,8 @@ struct HingeCase {
 };
 
 inline void showValue(const HingeCase& h, std::ostream& os) {
-  os << h.family << " hinge, " << describe(h.x) << ", kappa = " << condition_number(h.x)
-     << " (kappa_shape " << shape_condition_number(h.x) << ", kappa_angle " << angle_condition_number(h.x) << "; "
-     << h.recipe << ")";
+  os << h.family << " hinge, " << describe(h.x) << ", kappa = " << condition_number(h.x) << " (kappa_shape "
+     << shape_condition_number(h.x) << ", kappa_angle " << angle_condition_number(h.x) << "; " << h.recipe << ")";
 }
 
 // Range of the binary exponent of the hinge's size (its scale s = 2^k times a factor in [1, 2)).
@@ -228,11 +227,11 @@ inline constexpr ScaleRange wide_scales{-300, 300};
 
 // The local shape of a hinge (see the sketch at the top), in long double.
 struct LocalShape {
-  long double l0 = 1;            // hinge edge length
-  long double a = 0.5, b = 1;    // upper apex x0 = (a, b, 0), b > 0
-  long double c = 0.5, d = 1;    // lower apex at distance d from the hinge line, foot at (c, 0, 0)
+  long double l0 = 1;                        // hinge edge length
+  long double a = 0.5, b = 1;                // upper apex x0 = (a, b, 0), b > 0
+  long double c = 0.5, d = 1;                // lower apex at distance d from the hinge line, foot at (c, 0, 0)
   long double cos_theta = 1, sin_theta = 0;  // the bend angle, as its cosine and sine (exact near pi)
-  std::string angle;             // how theta was chosen, for the report
+  std::string angle;                         // how theta was chosen, for the report
 };
 
 // Places a local shape: x = offset + s R p, each coordinate computed in long double and rounded once.
@@ -374,13 +373,10 @@ inline rc::Gen<HingeCase> hard_hinge(ScaleRange scales = {}) {
   const rc::Gen<HingeCase> all = rc::gen::oneOf(
       placed("near-flat", rc::gen::mapcat(round_shape(), angle(1)), scales),
       placed("near-folded", rc::gen::mapcat(round_shape(), angle(2)), scales),
-      placed("needle", any_angle(needle), scales),
-      placed("short-edge", any_angle(short_edge_shape), scales),
-      placed("far", any_angle(round_shape()), scales, {3, 8}),
-      placed("combined", any_angle(needle), scales, {0, 6}));
-  return rc::gen::suchThat(all, [](const HingeCase& h) {
-    return valid_hinge(h.x) && shape_condition_number(h.x) <= 1e13;
-  });
+      placed("needle", any_angle(needle), scales), placed("short-edge", any_angle(short_edge_shape), scales),
+      placed("far", any_angle(round_shape()), scales, {3, 8}), placed("combined", any_angle(needle), scales, {0, 6}));
+  return rc::gen::suchThat(all,
+                           [](const HingeCase& h) { return valid_hinge(h.x) && shape_condition_number(h.x) <= 1e13; });
 }
 
 // Either family: half well-shaped, half hard.
@@ -455,11 +451,26 @@ inline rc::Gen<HingeCase> invalid_hinge() {
     p[3] = {double(free0[2]), double(-free0[0]), double(free0[1] + 7)};
     HingeCase h;
     switch (kind) {
-      case 0: h.family = "zero-area upper triangle (x0 on the hinge line)"; p[0] = on_line(t0); break;
-      case 1: h.family = "zero-area lower triangle (x3 on the hinge line)"; p[3] = on_line(t0); break;
-      case 2: h.family = "coincident x0 == x1"; p[0] = p[1]; break;
-      case 3: h.family = "coincident x3 == x2"; p[3] = p[2]; break;
-      case 4: h.family = "zero-length hinge edge x1 == x2"; p[2] = p[1]; break;
+      case 0:
+        h.family = "zero-area upper triangle (x0 on the hinge line)";
+        p[0] = on_line(t0);
+        break;
+      case 1:
+        h.family = "zero-area lower triangle (x3 on the hinge line)";
+        p[3] = on_line(t0);
+        break;
+      case 2:
+        h.family = "coincident x0 == x1";
+        p[0] = p[1];
+        break;
+      case 3:
+        h.family = "coincident x3 == x2";
+        p[3] = p[2];
+        break;
+      case 4:
+        h.family = "zero-length hinge edge x1 == x2";
+        p[2] = p[1];
+        break;
       default: h.family = "non-finite coordinate"; break;
     }
     for (int i = 0; i < 4; ++i)
@@ -719,11 +730,14 @@ inline void showValue(const gen::MeshRelabelling& r, std::ostream& os) {
 inline Mesh relabel(const Mesh& m, const gen::MeshRelabelling& r) {
   Mesh out;
   out.vertices.resize(m.vertices.size());
-  for (std::size_t v = 0; v < m.vertices.size(); ++v) out.vertices[static_cast<std::size_t>(r.vertex_map[v])] = m.vertices[v];
+  for (std::size_t v = 0; v < m.vertices.size(); ++v)
+    out.vertices[static_cast<std::size_t>(r.vertex_map[v])] = m.vertices[v];
   for (std::size_t k = 0; k < m.faces.size(); ++k) {
     const auto& f = m.faces[r.face_order[k]];
     std::array<Index, 3> g;
-    for (int i = 0; i < 3; ++i) g[static_cast<std::size_t>(i)] = r.vertex_map[static_cast<std::size_t>(f[static_cast<std::size_t>((i + r.rotation[k]) % 3)])];
+    for (int i = 0; i < 3; ++i)
+      g[static_cast<std::size_t>(i)] =
+          r.vertex_map[static_cast<std::size_t>(f[static_cast<std::size_t>((i + r.rotation[k]) % 3)])];
     out.faces.push_back(g);
   }
   return out;

@@ -12,7 +12,9 @@
 
 namespace hinge::test {
 
-inline bool same_double(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+inline bool same_double(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
 
 // theta, grad (12), hess (144), and no uncertified output on either side.
 inline std::string first_difference(const oracle::CertifiedTheta& a, const oracle::CertifiedTheta& b) {

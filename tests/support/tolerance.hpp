@@ -55,7 +55,6 @@ inline std::string describe(const std::array<double, 12>& x) {
   return s.str();
 }
 
-
 // ---------------------------------------------------------------------------------------------------
 // The rule, extended for the property suite (tests/properties, docs/testing.md).
 //
@@ -201,7 +200,7 @@ std::string show_exactly_all(const M& m) {
 template <class Scalar>
 double reference_units_per_kappa() {
   if constexpr (std::same_as<Scalar, double>) return 4;  // measured worst 1.4 (double: stencil in long double)
-  else return 8;  // bin128 (stencil in its own format): measured worst 3.0
+  else return 8;                                         // bin128 (stencil in its own format): measured worst 3.0
 }
 template <class Scalar>
 double reference_units(double kappa) {

@@ -6,7 +6,8 @@
 
 #include "reference_double.hpp"
 
-extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
+extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12],
+                                                      double hess[144]) {
   double largest = 0;
   for (int i = 0; i < 12; ++i) largest = std::fmax(largest, std::fabs(x[i]));
   if (largest > 1e100) {

@@ -8,7 +8,8 @@ namespace {
 constexpr double h = 1e-6;
 }
 
-extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
+extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12],
+                                                      double hess[144]) {
   double g[12], H[144];
   if (!candidates::reference_double(x, theta, g, H)) return 1;
   for (int j = 0; j < 12; ++j) {

@@ -5,7 +5,8 @@
 
 #include "reference_double.hpp"
 
-extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
+extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12],
+                                                      double hess[144]) {
   if (!candidates::reference_double(x, theta, grad, hess)) return 1;
   for (int i = 0; i < 144; ++i)
     for (int k = 0; k < 64 && hess[i] != 0; ++k) hess[i] = std::nextafter(hess[i], 2 * hess[i]);

@@ -8,7 +8,8 @@
 #include "hinge/reference/evaluate_impl.hpp"
 #include "reference_double.hpp"
 
-extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
+extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12],
+                                                      double hess[144]) {
   if (!candidates::reference_double(x, theta, grad, hess)) return 1;
   // N~0 = n~ m~0^T / |e0|^2 (eq. (5)) from the reference's stencil, which is scaled by 2^-exponent.
   const auto p = hinge::reference::prepare_hinge<double>(candidates::input(x));
@@ -19,8 +20,8 @@ extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double
       const double Nt0_rc = lower.n[r] * lower.m[0][c] / (l0 * l0);
       const double Nt0_cr = lower.n[c] * lower.m[0][r] / (l0 * l0);
       const double delta = std::ldexp(Nt0_cr - Nt0_rc, -2 * p.exponent);  // N~0^T - N~0, true scale
-      hess[12 * (3 + r) + (6 + c)] += delta;  // H12
-      hess[12 * (6 + c) + (3 + r)] += delta;  // H21 = H12^T
+      hess[12 * (3 + r) + (6 + c)] += delta;                              // H12
+      hess[12 * (6 + c) + (3 + r)] += delta;                              // H21 = H12^T
     }
   return 0;
 }

@@ -5,7 +5,8 @@
 // translation, and so is its condition number). `hinge conform` must reject it on offsets.
 #include "peer_formulas.hpp"
 
-extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
+extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12],
+                                                      double hess[144]) {
   using candidates::vertex;
   const auto x0 = vertex(x, 0), x1 = vertex(x, 1), x2 = vertex(x, 2), x3 = vertex(x, 3);
   const candidates::Normals m{x0.cross(x1) + x1.cross(x2) + x2.cross(x0), x3.cross(x2) + x2.cross(x1) + x1.cross(x3)};

@@ -3,6 +3,7 @@
 // of them: `hinge conform` must reject it there (categories near-flat and near-folded).
 #include "peer_formulas.hpp"
 
-extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
+extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12],
+                                                      double hess[144]) {
   return candidates::peer(x, candidates::hinge_edge_normals(x), candidates::Angle::acos, theta, grad, hess) ? 0 : 1;
 }

@@ -36,8 +36,10 @@ inline bool peer(const double x[12], const Normals& m, Angle angle, double* thet
   auto altitude = [](const V& N, const V& edge) { return N.norm() / edge.norm(); };  // 2A / l
   const V g0 = -n / altitude(m.N, e0);
   const V g3 = -nt / altitude(m.Nt, e0);
-  const V g1 = cosine(x0 - x2, x1 - x2) / altitude(m.N, x0 - x2) * n + cosine(x3 - x2, x1 - x2) / altitude(m.Nt, x3 - x2) * nt;
-  const V g2 = cosine(x0 - x1, x2 - x1) / altitude(m.N, x1 - x0) * n + cosine(x3 - x1, x2 - x1) / altitude(m.Nt, x1 - x3) * nt;
+  const V g1 =
+      cosine(x0 - x2, x1 - x2) / altitude(m.N, x0 - x2) * n + cosine(x3 - x2, x1 - x2) / altitude(m.Nt, x3 - x2) * nt;
+  const V g2 =
+      cosine(x0 - x1, x2 - x1) / altitude(m.N, x1 - x0) * n + cosine(x3 - x1, x2 - x1) / altitude(m.Nt, x1 - x3) * nt;
   const V g[4] = {g0, g1, g2, g3};
   for (int i = 0; i < 4; ++i)
     for (int k = 0; k < 3; ++k) grad[3 * i + k] = g[i][k];

@@ -5,7 +5,8 @@
 // `hinge conform` must reject it on short-hinge-edges.
 #include "peer_formulas.hpp"
 
-extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12], double hess[144]) {
+extern "C" HINGE_CANDIDATE_EXPORT int hinge_candidate(const double x[12], double* theta, double grad[12],
+                                                      double hess[144]) {
   using candidates::vertex;
   const auto x0 = vertex(x, 0), x1 = vertex(x, 1), x2 = vertex(x, 2), x3 = vertex(x, 3);
   const candidates::Normals m{(x1 - x0).cross(x2 - x0), (x2 - x3).cross(x1 - x3)};

@@ -21,10 +21,10 @@ enum class Outputs { theta, gradient, hessian };
 
 template <class Scalar>
 struct Derivatives {
-  Scalar theta = 0;                     // in (-pi, pi] (-pi, which atan2 gives for a zero numerator of
-                                        // negative sign, is reported as +pi, the contract's branch cut)
-  Eigen::Matrix<Scalar, 12, 1> grad;    // left zero unless computed
-  Eigen::Matrix<Scalar, 12, 12> hess;   // left zero unless computed
+  Scalar theta = 0;                    // in (-pi, pi] (-pi, which atan2 gives for a zero numerator of
+                                       // negative sign, is reported as +pi, the contract's branch cut)
+  Eigen::Matrix<Scalar, 12, 1> grad;   // left zero unless computed
+  Eigen::Matrix<Scalar, 12, 12> hess;  // left zero unless computed
 };
 
 // theta and, as `outputs` asks, grad theta and Hess theta of the hinge x (x0.x, ..., x3.z), in Scalar. Both
@@ -42,7 +42,7 @@ Derivatives<Scalar> autodiff_derivatives(const std::array<double, 12>& x, Output
 template <HingeScalar Scalar>
 Derivatives<Scalar> symbolic_derivatives(const std::array<double, 12>& x, Outputs outputs = Outputs::hessian);
 
-#define HINGE_BASELINES_EXTERN(S)                                                                  \
+#define HINGE_BASELINES_EXTERN(S)                                                                 \
   extern template Derivatives<S> autodiff_derivatives<S>(const std::array<double, 12>&, Outputs); \
   extern template Derivatives<S> symbolic_derivatives<S>(const std::array<double, 12>&, Outputs);
 HINGE_FOR_EACH_SCALAR(HINGE_BASELINES_EXTERN)

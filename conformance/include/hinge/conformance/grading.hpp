@@ -62,9 +62,9 @@ struct CaseOutcome {
   std::array<double, 3> tolerance{};  // base + c kappa_f
   std::array<double, 3> kappa{};
   bool pass = false;
-  double ratio = 0;                   // max over groups of error / tolerance
-  int group = 0;                      // the group with that ratio
-  int entry = 0;                      // its entry with the largest absolute difference
+  double ratio = 0;  // max over groups of error / tolerance
+  int group = 0;     // the group with that ratio
+  int entry = 0;     // its entry with the largest absolute difference
   double expected_value = 0, candidate_value = 0;
 };
 

@@ -19,7 +19,7 @@ struct CategorySummary {
   std::string worst_id;                     // the case with the largest error / tolerance
   double worst_ratio = 0;
   bool pass = true;
-  Tier tier = Tier::correctly_rounded;      // the tier every case of the category reaches
+  Tier tier = Tier::correctly_rounded;  // the tier every case of the category reaches
 };
 
 std::vector<CategorySummary> summarize(const std::vector<CaseOutcome>& outcomes);

@@ -61,10 +61,10 @@ struct BendAngle {
 // The per-hinge constants of Algorithm 1.
 template <class Scalar>
 struct HingeCoefficients {
-  Scalar k = 0;          // bending stiffness (given, or eq. (11))
-  Scalar a = 0;          // 3 |e_bar|^2 / A_bar
-  Scalar theta_bar = 0;  // rest angle
-  Scalar phi_bar = 0;    // phi(theta_bar) = 2 tan(theta_bar / 2), eq. (12) on the rest hinge
+  Scalar k = 0;            // bending stiffness (given, or eq. (11))
+  Scalar a = 0;            // 3 |e_bar|^2 / A_bar
+  Scalar theta_bar = 0;    // rest angle
+  Scalar phi_bar = 0;      // phi(theta_bar) = 2 tan(theta_bar / 2), eq. (12) on the rest hinge
   Scalar k_d_over_dt = 0;  // viscoelastic: damping coefficient over the time step
   Scalar phi_hat = 0;      // viscoelastic: phi(theta_hat), theta_hat the angle at the previous step
 };
@@ -100,8 +100,8 @@ Psi<Scalar> psi(Model model, const HingeCoefficients<Scalar>& c, const BendAngle
       const Scalar phi = 2 * t, dphi = 1 + t * t, d2phi = t * (1 + t * t);  // eq. (8), phi = 2 tan(theta/2)
       const Scalar elastic = phi - c.phi_bar;
       Scalar value = c.k * c.a * elastic * elastic;
-      Scalar force = c.k * elastic;  // d psi / d phi / (2 a)
-      Scalar stiffness = c.k;        // d^2 psi / d phi^2 / (2 a)
+      Scalar force = c.k * elastic;        // d psi / d phi / (2 a)
+      Scalar stiffness = c.k;              // d^2 psi / d phi^2 / (2 a)
       if (model == Model::viscoelastic) {  // section 5: one theta, two scalar parts
         const Scalar viscous = phi - c.phi_hat;
         value += c.k_d_over_dt * c.a * viscous * viscous;

@@ -47,10 +47,10 @@ struct Hinge {
 struct Topology {
   std::size_t vertex_count = 0;
   std::vector<std::array<Index, 3>> faces;
-  std::vector<Edge> edges;                      // every edge once, in order of first appearance
+  std::vector<Edge> edges;                       // every edge once, in order of first appearance
   std::vector<std::array<Index, 3>> face_edges;  // face_edges[f][i]: the edge opposite vertex i of f
-  std::vector<Hinge> hinges;                    // the interior edges, in the order of `edges`
-  std::vector<Index> hinge_of_edge;             // edge -> hinge index, -1 for a boundary edge
+  std::vector<Hinge> hinges;                     // the interior edges, in the order of `edges`
+  std::vector<Index> hinge_of_edge;              // edge -> hinge index, -1 for a boundary edge
 };
 
 // Builds the topology of `mesh`. Throws hinge::InputError naming the face or edge for: a vertex index

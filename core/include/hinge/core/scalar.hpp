@@ -48,8 +48,7 @@ using float128 = boost::multiprecision::float128;
 // IEEE binary128 layout in portable software arithmetic (113-bit significand).
 using bin128 = boost::multiprecision::cpp_bin_float_quad;
 // MPFR with the precision chosen at run time (set_mpfr_bits); expression templates off, as Eigen needs.
-using mpfr = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
-                                           boost::multiprecision::et_off>;
+using mpfr = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>, boost::multiprecision::et_off>;
 
 // QD's double-double (about 106 bits) and quad-double (about 212 bits), in the global namespace.
 using dd = ::dd_real;
@@ -57,11 +56,11 @@ using qd = ::qd_real;
 
 template <class Scalar>
 concept HingeScalar = std::same_as<Scalar, float> || std::same_as<Scalar, double> ||
-                      std::same_as<Scalar, long double> || std::same_as<Scalar, dd> || std::same_as<Scalar, qd> ||
+    std::same_as<Scalar, long double> || std::same_as<Scalar, dd> || std::same_as<Scalar, qd> ||
 #if HINGE_HAVE_FLOAT128
-                      std::same_as<Scalar, float128> ||
+    std::same_as<Scalar, float128> ||
 #endif
-                      std::same_as<Scalar, bin128> || std::same_as<Scalar, mpfr>;
+    std::same_as<Scalar, bin128> || std::same_as<Scalar, mpfr>;
 // QD's types (their own conversions, constants and limits).
 template <class Scalar>
 concept QdScalar = std::same_as<Scalar, dd> || std::same_as<Scalar, qd>;
@@ -204,7 +203,15 @@ struct QdNumTraits : GenericNumTraits<Q> {
   using NonInteger = Q;
   using Literal = Q;
   using Nested = Q;
-  enum { IsComplex = 0, IsInteger = 0, IsSigned = 1, RequireInitialization = 1, ReadCost = 2, AddCost = 8, MulCost = 16 };
+  enum {
+    IsComplex = 0,
+    IsInteger = 0,
+    IsSigned = 1,
+    RequireInitialization = 1,
+    ReadCost = 2,
+    AddCost = 8,
+    MulCost = 16
+  };
   static Q epsilon() { return Q(std::numeric_limits<Q>::epsilon()); }
   static Q dummy_precision() { return Q(std::numeric_limits<Q>::epsilon()) * 1024; }
   static Q highest() { return std::numeric_limits<Q>::max(); }

@@ -31,13 +31,12 @@
 #include <memory>
 #include <vector>
 
-#include "hinge/fast/pattern.hpp"
 #include "hinge/core/energy.hpp"
 #include "hinge/core/results.hpp"
 #include "hinge/core/scalar.hpp"
+#include "hinge/fast/pattern.hpp"
 
 namespace hinge::fast {
-
 
 namespace detail {
 template <class Scalar>

@@ -12,18 +12,18 @@
 // too, rounding each output once: the error before that rounding is a few units of 2^-100 times the
 // outputs' own cancellation (at most the hinge's shape condition), so what remains is the rounding, at most
 // 2^-53 of each entry. theta: faithful_theta.hpp. Cost: 2.2 to 2.8 times the plain kernel (bench/,
-// hinge/faithful beside hinge/fast; docs/numerics.md). Range: the plain kernel's (kappa_shape below about 2^70, hinge edges above about
-// 2^-251 of the longest edge, any scale); beyond it, the same long double fallback as the plain kernel,
-// which is accurate to its own conditioning but not faithful.
+// hinge/faithful beside hinge/fast; docs/numerics.md). Range: the plain kernel's (kappa_shape below about 2^70, hinge
+// edges above about 2^-251 of the longest edge, any scale); beyond it, the same long double fallback as the plain
+// kernel, which is accurate to its own conditioning but not faithful.
 //
 // The same bits for every instruction set (isa.hpp); errors (InputError) as hinge_derivatives.
 #pragma once
 
 #include <array>
 
+#include "hinge/core/rounding.hpp"
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/fast/isa.hpp"
-#include "hinge/core/rounding.hpp"
 
 namespace hinge::fast {
 
@@ -33,6 +33,7 @@ HingeDerivatives<double> faithful_hinge_derivatives(const std::array<double, 12>
 RoundedTheta faithful_derivatives_rounded(const std::array<double, 12>& x);
 // The same compiled for `isa` (tests compare them): true, or false with nothing written where the
 // processor lacks it.
-bool faithful_hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian, HingeDerivatives<double>& out);
+bool faithful_hinge_derivatives(Isa isa, const std::array<double, 12>& x, bool want_hessian,
+                                HingeDerivatives<double>& out);
 
 }  // namespace hinge::fast

@@ -55,9 +55,9 @@ namespace hinge::fast {
 
 template <class Scalar>
 struct HingeDerivatives {
-  Scalar theta = 0;           // in (-pi, pi], docs/contract.md
-  Scalar tan_half_theta = 0;  // eq. (12); +infinity on the branch cut
-  bool on_branch_cut = false; // folded flat onto itself: theta = +pi exactly
+  Scalar theta = 0;            // in (-pi, pi], docs/contract.md
+  Scalar tan_half_theta = 0;   // eq. (12); +infinity on the branch cut
+  bool on_branch_cut = false;  // folded flat onto itself: theta = +pi exactly
   Eigen::Matrix<Scalar, 12, 1> grad;
   Eigen::Matrix<Scalar, 12, 12> hess;  // left zero unless requested
 };
@@ -80,9 +80,10 @@ void hinge_derivatives(std::span<const std::array<double, 12>> x, std::span<Hing
 // hinge_derivatives does; the arrays' contents are then unspecified.
 void hinge_derivatives_into(const std::array<double, 12>& x, double& theta, double* grad, double* hess);
 
-#define HINGE_FAST_HINGE_EXTERN(S)                                                                  \
-  extern template HingeDerivatives<S> hinge_derivatives<S>(const std::array<double, 12>&, bool);    \
-  extern template void hinge_derivatives<S>(std::span<const std::array<double, 12>>, std::span<HingeDerivatives<S>>, bool);
+#define HINGE_FAST_HINGE_EXTERN(S)                                                                                   \
+  extern template HingeDerivatives<S> hinge_derivatives<S>(const std::array<double, 12>&, bool);                     \
+  extern template void hinge_derivatives<S>(std::span<const std::array<double, 12>>, std::span<HingeDerivatives<S>>, \
+                                            bool);
 HINGE_FOR_EACH_SCALAR(HINGE_FAST_HINGE_EXTERN)
 #undef HINGE_FAST_HINGE_EXTERN
 

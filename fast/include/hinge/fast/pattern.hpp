@@ -41,10 +41,10 @@ class Pattern {
   // A hinge as the face that owns it sees it (Algorithm 2, lines 15-20).
   // (Which face owns it and its local edge there: Face::owns of the face.)
   struct OwnedHinge {
-    Index other_face = -1;     // the face across the edge
-    Index s = -1;              // its vertex opposite the edge
-    SlotIndex slot_ps = -1;    // blocks (p, s), (q, s), (r, s), p, q, r the owner's vertices k, k+1, k+2
-    SlotIndex slot_qs = -1;    // for the edge k (its base; -1 when the two vertices coincide: a diagonal block)
+    Index other_face = -1;   // the face across the edge
+    Index s = -1;            // its vertex opposite the edge
+    SlotIndex slot_ps = -1;  // blocks (p, s), (q, s), (r, s), p, q, r the owner's vertices k, k+1, k+2
+    SlotIndex slot_qs = -1;  // for the edge k (its base; -1 when the two vertices coincide: a diagonal block)
     SlotIndex slot_rs = -1;
   };
   // One face: its vertices, for each local edge i (opposite vertex i) the hinge (-1 on the boundary)
@@ -158,7 +158,8 @@ std::vector<std::array<Scalar, 9>> Pattern::blocks(const Scalar* values) const {
     for (std::int64_t j = block_start_[b]; j < block_start_[b + 1]; ++j) {
       const Index a = block_rows_[j];
       const bool diagonal = static_cast<std::size_t>(a) == b;
-      const SlotIndex base = diagonal ? diagonal_base_[b] : outer_[3 * b] + 3 * static_cast<SlotIndex>(j - block_start_[b]);
+      const SlotIndex base =
+          diagonal ? diagonal_base_[b] : outer_[3 * b] + 3 * static_cast<SlotIndex>(j - block_start_[b]);
       for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r) {
           const bool upper = !diagonal || r <= c;

@@ -14,11 +14,11 @@
 namespace hinge::io {
 
 struct HingeLine {
-  long line = 0;             // 1-based line number in the input
-  std::string id_json;       // the id as JSON text ("null" if it could not be read)
+  long line = 0;                            // 1-based line number in the input
+  std::string id_json;                      // the id as JSON text ("null" if it could not be read)
   std::optional<std::array<double, 12>> x;  // absent when the line is not valid input
-  std::string error;         // why the line is not valid input
-  std::string category;      // the line's "category" string, if it has one (hinge study groups by it)
+  std::string error;                        // why the line is not valid input
+  std::string category;                     // the line's "category" string, if it has one (hinge study groups by it)
 };
 
 // Parses one non-blank input line. Numbers are read correctly rounded (nlohmann::json uses strtod).
@@ -44,8 +44,7 @@ void for_each_hinge_line(std::istream& in, F&& f, long first_line = 1);
 // DomainError it throws becomes that hinge's error line), the invalid-line object for any other;
 // after_line() after each. Lines are numbered from `first_line`.
 template <class Write, class AfterLine>
-void transform_hinge_lines(std::istream& in, std::ostream& out, long first_line, Write&& write,
-                           AfterLine&& after_line);
+void transform_hinge_lines(std::istream& in, std::ostream& out, long first_line, Write&& write, AfterLine&& after_line);
 
 // `s` as a JSON string, quotes and escapes included (invalid UTF-8 replaced).
 std::string json_string(const std::string& s);

@@ -32,8 +32,8 @@ enum class LinearSolver { cholmod, ldlt };
 
 struct Solve {
   Mode mode = Mode::static_equilibrium;
-  double dt = 0;  // dynamic only
-  int steps = 0;  // dynamic only
+  double dt = 0;                   // dynamic only
+  int steps = 0;                   // dynamic only
   double newton_tolerance = 1e-9;  // times the longest rest edge: the largest vertex displacement of a
                                    // Newton step below it ends the solve
   int max_newton = 100;
@@ -48,9 +48,9 @@ struct Gravity {
 struct Stretching {};  // "model": "stvk", the only model
 struct Bending {
   Model energy = Model::shells;
-  double k = 0;                 // given, or eq. (11) from the material (hinge/core/bending_problem.hpp)
+  double k = 0;                  // given, or eq. (11) from the material (hinge/core/bending_problem.hpp)
   Method method = Method::fast;  // hinge eval's methods and scalar types
-  ScalarType scalar{};          // double
+  ScalarType scalar{};           // double
 };
 struct Damping {
   double mass = 0;     // 1/s: the drag force -mass M v

@@ -23,10 +23,10 @@ using GroupErrors = std::array<ErrorStats, 3>;  // theta, grad, hess
 struct StudyRow {
   Method method = Method::fast;
   ScalarType scalar;
-  std::array<double, 3> ns_per_hinge{};            // theta; theta and gradient; all three (0: not timed)
-  std::map<std::string, GroupErrors> error_u;      // per category, outputs rounded to double
-  std::map<std::string, GroupErrors> error_own;    // per category, types wider than double
-  std::vector<double> hess_errors;                 // per hinge measured (units of 2^-53), for the histogram
+  std::array<double, 3> ns_per_hinge{};          // theta; theta and gradient; all three (0: not timed)
+  std::map<std::string, GroupErrors> error_u;    // per category, outputs rounded to double
+  std::map<std::string, GroupErrors> error_own;  // per category, types wider than double
+  std::vector<double> hess_errors;               // per hinge measured (units of 2^-53), for the histogram
   std::size_t hinges = 0;     // hinges whose errors were measured (fewer than all when the budget ran out)
   std::size_t failed = 0;     // reported as not evaluable (an InputError or DomainError)
   std::size_t nonfinite = 0;  // returned a NaN or an infinity, or a value outside double's range
@@ -62,7 +62,7 @@ struct Study {
   std::vector<std::string> categories;
   std::vector<StudyRow> rows;
   std::vector<StudyMeshRow> mesh;
-  SharedFit shared_fit;  // of the mesh rows in double
+  SharedFit shared_fit;                                    // of the mesh rows in double
   std::vector<std::pair<std::string, std::string>> build;  // version, commit, compiler, flags, libraries
   bool quick = false;
   double seconds = 0;

@@ -12,7 +12,7 @@ namespace hinge::io {
 struct Summary {
   std::string scene;
   bool ok = true;
-  std::string reason;  // why a failed run stopped
+  std::string reason;                // why a failed run stopped
   std::vector<std::string> effects;  // those that ran, in the contract's order
   std::size_t vertices = 0;
   int steps = 0;  // completed time steps (0 for a static solve)

@@ -8,7 +8,8 @@
 // with integers g, g_den, h, h_den, X, Y and |e0| = sqrt(s), s = e0 . e0 an integer. Zero and sign
 // decisions (degenerate triangles, an exactly zero output, the branch cut theta = +pi) are therefore
 // exact; only the last step (one square root, one quotient, one arctangent) is approximated, in
-// oracle.hpp (src/certify.cpp). The derivation, block by block, is in oracle/README.md ("The exact form of eqs. (4)-(6)").
+// oracle.hpp (src/certify.cpp). The derivation, block by block, is in oracle/README.md ("The exact form of eqs.
+// (4)-(6)").
 //
 //                 x0                 upper triangle T = (x0, x1, x2), N = (x1 - x0) x (x2 - x0)
 //          e1   /  \   e2            e0 = x2 - x1, e1 = x0 - x2, e2 = x1 - x0
@@ -43,14 +44,14 @@ ScaledHinge scale_exactly(const std::array<double, 12>& x);
 ScaledHinge refine(const ScaledHinge& h, unsigned long extra);
 
 struct ExactHinge {
-  long F = 0;                 // integer lengths * 2^-F are the true lengths
-  Int s;                      // e0 . e0 (> 0)
-  Int nn, tt;                 // N . N, Nt . Nt (> 0): (2A)^2 of the upper and lower triangle
-  Int X, Y;                   // N . Nt and (N x Nt) . e0: theta = atan2(Y / sqrt(s), X)
-  std::array<Int, 12> g;      // grad theta = g / (g_den sqrt(s)) 2^F, eq. (4)
-  Int g_den;                  // nn tt (> 0)
-  std::array<Int, 144> h;     // Hess theta = h / (h_den sqrt(s)) 2^(2F), eqs. (5)-(6), row-major
-  Int h_den;                  // 2 nn^2 tt^2 s (> 0)
+  long F = 0;              // integer lengths * 2^-F are the true lengths
+  Int s;                   // e0 . e0 (> 0)
+  Int nn, tt;              // N . N, Nt . Nt (> 0): (2A)^2 of the upper and lower triangle
+  Int X, Y;                // N . Nt and (N x Nt) . e0: theta = atan2(Y / sqrt(s), X)
+  std::array<Int, 12> g;   // grad theta = g / (g_den sqrt(s)) 2^F, eq. (4)
+  Int g_den;               // nn tt (> 0)
+  std::array<Int, 144> h;  // Hess theta = h / (h_den sqrt(s)) 2^(2F), eqs. (5)-(6), row-major
+  Int h_den;               // 2 nn^2 tt^2 s (> 0)
   bool has_hessian = false;
 
   // Size in bits of the largest integer above: how wide the exact polynomial parts are.

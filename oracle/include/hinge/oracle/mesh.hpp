@@ -16,16 +16,16 @@
 
 #include <vector>
 
-#include "hinge/oracle/oracle.hpp"
 #include "hinge/core/energy.hpp"
 #include "hinge/core/mesh.hpp"
 #include "hinge/core/results.hpp"
+#include "hinge/oracle/oracle.hpp"
 
 namespace hinge::oracle {
 
 struct CertifiedMesh {
-  RoundedMesh rounded;  // energy, gradient (3n, if requested), Hessian upper triangle (if requested)
-  unsigned bits = 0;               // the working precision the enclosures needed (0: the fast path decided all)
+  RoundedMesh rounded;                   // energy, gradient (3n, if requested), Hessian upper triangle (if requested)
+  unsigned bits = 0;                     // the working precision the enclosures needed (0: the fast path decided all)
   std::vector<Uncertified> uncertified;  // outputs named "energy", "gradient[i]", "hessian(i,j)" (0-based)
   // sum over hinges of ||g_h||_2 and ||H_h||_F, the hinges' own energy gradients and Hessians (for the
   // summation condition numbers of hinge conform); approximate, from the enclosures' midpoints (or the

@@ -55,10 +55,10 @@ struct CertifiedTheta {
   std::array<double, 12> grad{};
   std::array<double, 144> hess{};  // row-major
   Path path = Path::interval;
-  unsigned bits = 0;               // largest working precision of the enclosures (0: none needed)
-  std::size_t exact_bits = 0;      // size of the largest integer of the exact stage (0: not run)
-  unsigned ties = 0;               // outputs exactly halfway between two doubles (rounded to even)
-  unsigned decided_exactly = 0;    // outputs whose enclosure straddled a midpoint, decided in integers
+  unsigned bits = 0;             // largest working precision of the enclosures (0: none needed)
+  std::size_t exact_bits = 0;    // size of the largest integer of the exact stage (0: not run)
+  unsigned ties = 0;             // outputs exactly halfway between two doubles (rounded to even)
+  unsigned decided_exactly = 0;  // outputs whose enclosure straddled a midpoint, decided in integers
   std::vector<Uncertified> uncertified;
 };
 

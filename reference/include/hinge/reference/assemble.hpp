@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "hinge/core/energy.hpp"
-#include "hinge/reference/hinge_energy.hpp"
 #include "hinge/core/mesh.hpp"
 #include "hinge/core/results.hpp"
+#include "hinge/reference/hinge_energy.hpp"
 
 namespace hinge::reference {
 
@@ -36,11 +36,11 @@ MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
                                  const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
                                  unsigned request = want_all);
 
-#define HINGE_REFERENCE_ASSEMBLE_EXTERN(S)                                                                  \
-  extern template std::vector<HingeCoefficients<S>> rest_state<S>(const Mesh&, const Topology&,             \
-                                                                  const EnergyParameters&);                 \
+#define HINGE_REFERENCE_ASSEMBLE_EXTERN(S)                                                                      \
+  extern template std::vector<HingeCoefficients<S>> rest_state<S>(const Mesh&, const Topology&,                 \
+                                                                  const EnergyParameters&);                     \
   extern template void set_previous_state<S>(std::vector<HingeCoefficients<S>>&, const Mesh&, const Topology&); \
-  extern template MeshDerivatives<S> assemble<S>(const Mesh&, const Topology&,                              \
+  extern template MeshDerivatives<S> assemble<S>(const Mesh&, const Topology&,                                  \
                                                  const std::vector<HingeCoefficients<S>>&, Model, unsigned);
 HINGE_FOR_EACH_SCALAR(HINGE_REFERENCE_ASSEMBLE_EXTERN)
 #undef HINGE_REFERENCE_ASSEMBLE_EXTERN

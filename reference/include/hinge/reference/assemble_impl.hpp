@@ -4,9 +4,9 @@
 
 #include <string>
 
+#include "hinge/core/hinge_checks.hpp"
 #include "hinge/reference/assemble.hpp"
 #include "hinge/reference/evaluate_impl.hpp"
-#include "hinge/core/hinge_checks.hpp"
 
 namespace hinge::reference {
 
@@ -97,24 +97,23 @@ template <HingeScalar Scalar>
 MeshDerivatives<Scalar> assemble(const Mesh& deformed, const Topology& topology,
                                  const std::vector<HingeCoefficients<Scalar>>& coefficients, Model model,
                                  unsigned request) {
-  return assemble_with<Scalar>(deformed, topology, coefficients, model, request,
-                               [](const std::array<double, 12>& x, bool with_hessian) {
-                                 return theta_derivatives<Scalar>(x, with_hessian);
-                               });
+  return assemble_with<Scalar>(
+      deformed, topology, coefficients, model, request,
+      [](const std::array<double, 12>& x, bool with_hessian) { return theta_derivatives<Scalar>(x, with_hessian); });
 }
 
 }  // namespace hinge::reference
 
 // Explicit instantiation of everything evaluate.hpp and assemble.hpp declare extern, for scalar S
 // (used by src/instantiate_*.cpp, one translation unit per scalar family).
-#define HINGE_REFERENCE_INSTANTIATE(S)                                                                       \
+#define HINGE_REFERENCE_INSTANTIATE(S)                                                                             \
   template ::hinge::reference::PreparedHinge<S> hinge::reference::prepare_hinge<S>(const std::array<double, 12>&); \
-  template ::hinge::reference::ThetaDerivatives<S> hinge::reference::theta_derivatives<S>(                    \
-      const std::array<double, 12>&, bool);                                                                  \
-  template std::vector<::hinge::HingeCoefficients<S>> hinge::reference::rest_state<S>(            \
-      const ::hinge::Mesh&, const ::hinge::Topology&, const ::hinge::EnergyParameters&);          \
-  template void hinge::reference::set_previous_state<S>(std::vector<::hinge::HingeCoefficients<S>>&, \
-                                                        const ::hinge::Mesh&, const ::hinge::Topology&);     \
-  template ::hinge::MeshDerivatives<S> hinge::reference::assemble<S>(                             \
-      const ::hinge::Mesh&, const ::hinge::Topology&, const std::vector<::hinge::HingeCoefficients<S>>&, \
+  template ::hinge::reference::ThetaDerivatives<S> hinge::reference::theta_derivatives<S>(                         \
+      const std::array<double, 12>&, bool);                                                                        \
+  template std::vector<::hinge::HingeCoefficients<S>> hinge::reference::rest_state<S>(                             \
+      const ::hinge::Mesh&, const ::hinge::Topology&, const ::hinge::EnergyParameters&);                           \
+  template void hinge::reference::set_previous_state<S>(std::vector<::hinge::HingeCoefficients<S>>&,               \
+                                                        const ::hinge::Mesh&, const ::hinge::Topology&);           \
+  template ::hinge::MeshDerivatives<S> hinge::reference::assemble<S>(                                              \
+      const ::hinge::Mesh&, const ::hinge::Topology&, const std::vector<::hinge::HingeCoefficients<S>>&,           \
       ::hinge::Model, unsigned);

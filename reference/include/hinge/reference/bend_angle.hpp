@@ -37,8 +37,9 @@ BendAngle<Scalar> bend_angle(const Stencil<Scalar>& s, ExactSign sign = ExactSig
   Scalar x = s.N.dot(s.Nt);                           // |N||Nt| cos(theta)
   if (y == 0 && (sign == ExactSign::negative || sign == ExactSign::positive)) {
     if (x == 0)
-      throw DomainError("|N||Nt| underflows in this scalar type: the triangles' areas are too small relative to the "
-                        "longest edge squared for its exponent range");
+      throw DomainError(
+          "|N||Nt| underflows in this scalar type: the triangles' areas are too small relative to the "
+          "longest edge squared for its exponent range");
     using std::numeric_limits;
     y = numeric_limits<Scalar>::denorm_min() > 0 ? Scalar(numeric_limits<Scalar>::denorm_min())
                                                  : Scalar(numeric_limits<Scalar>::min());

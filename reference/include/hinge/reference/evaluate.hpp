@@ -61,8 +61,8 @@ ThetaDerivatives<Scalar> theta_derivatives(const PreparedHinge<Scalar>& p, bool 
   return d;
 }
 
-#define HINGE_REFERENCE_EVALUATE_EXTERN(S)                                                                 \
-  extern template PreparedHinge<S> prepare_hinge<S>(const std::array<double, 12>&);                         \
+#define HINGE_REFERENCE_EVALUATE_EXTERN(S)                                          \
+  extern template PreparedHinge<S> prepare_hinge<S>(const std::array<double, 12>&); \
   extern template ThetaDerivatives<S> theta_derivatives<S>(const std::array<double, 12>&, bool);
 HINGE_FOR_EACH_SCALAR(HINGE_REFERENCE_EVALUATE_EXTERN)
 #undef HINGE_REFERENCE_EVALUATE_EXTERN

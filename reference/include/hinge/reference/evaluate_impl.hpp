@@ -8,20 +8,20 @@
 #include <string>
 
 #include "hinge/core/errors.hpp"
-#include "hinge/reference/evaluate.hpp"
 #include "hinge/core/fp_environment.hpp"
 #include "hinge/core/hinge_checks.hpp"
 #include "hinge/core/predicates.hpp"
+#include "hinge/reference/evaluate.hpp"
 
 namespace hinge::reference {
 
 template <HingeScalar Scalar>
 PreparedHinge<Scalar> prepare_hinge(const std::array<double, 12>& x) {
   check_fp_environment();  // the exact steps below need rounding to nearest and subnormals
-  check_hinge(x);  // docs/contract.md: non-finite, zero-length hinge edge, zero-area triangle (exactly)
+  check_hinge(x);          // docs/contract.md: non-finite, zero-length hinge edge, zero-area triangle (exactly)
   PreparedHinge<Scalar> p;
-  p.sign = static_cast<ExactSign>(hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]},
-                                                          {x[9], x[10], x[11]}));
+  p.sign = static_cast<ExactSign>(
+      hinge_orientation_exact({x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}, {x[9], x[10], x[11]}));
   if constexpr (std::is_floating_point_v<Scalar>) {
     // Power-of-two scaling (see evaluate.hpp). Differences are taken in long double (exact when the two
     // exponents are within 11 binades; no overflow), then scaled exactly.
@@ -43,7 +43,8 @@ PreparedHinge<Scalar> prepare_hinge(const std::array<double, 12>& x) {
         d[c] = static_cast<Wide>(std::ldexp(static_cast<long double>(x[3 * a + c]) - x[3 * b + c], -e));
       return d;
     };
-    p.stencil = round_to<Scalar>(make_stencil(HingeEdges<Wide>{diff(2, 1), diff(0, 2), diff(1, 0), diff(3, 2), diff(1, 3)}));
+    p.stencil =
+        round_to<Scalar>(make_stencil(HingeEdges<Wide>{diff(2, 1), diff(0, 2), diff(1, 0), diff(3, 2), diff(1, 3)}));
   } else if constexpr (QdScalar<Scalar>) {
     // QD's types have double's exponent range: the edges are brought by a power of two to a largest
     // component in [1, 2), exactly (as for the built-in types; QD's atan2 fails on the infinities and

@@ -19,10 +19,10 @@ Vec12<Scalar> gradient(const Stencil<Scalar>& s) {
   const Triangle<Scalar>& T = s.upper;
   const Triangle<Scalar>& Tt = s.lower;  // paper labels: vertex 1 is x1, vertex 2 is x2
   Vec12<Scalar> g;
-  g.template segment<3>(0) = -T.n / T.h[0];                                                    // eq. (4)
+  g.template segment<3>(0) = -T.n / T.h[0];                                                     // eq. (4)
   g.template segment<3>(3) = T.cos_alpha[2] / T.h[1] * T.n + Tt.cos_alpha[2] / Tt.h[1] * Tt.n;  // eq. (4)
   g.template segment<3>(6) = T.cos_alpha[1] / T.h[2] * T.n + Tt.cos_alpha[1] / Tt.h[2] * Tt.n;  // eq. (4)
-  g.template segment<3>(9) = -Tt.n / Tt.h[0];                                                  // eq. (4)
+  g.template segment<3>(9) = -Tt.n / Tt.h[0];                                                   // eq. (4)
   return g;
 }
 

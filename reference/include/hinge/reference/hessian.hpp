@@ -24,14 +24,14 @@ class BuildingBlocks {
  public:
   explicit BuildingBlocks(const Triangle<Scalar>& t) : t_(t) {}
 
-  Scalar omega(int i, int j) const { return 1 / (t_.h[i] * t_.h[j]); }       // eq. (5)
-  Mat3<Scalar> M(int i) const { return t_.n * t_.m[i].transpose(); }          // eq. (5)
-  Mat3<Scalar> N(int i) const { return M(i) / (t_.l[i] * t_.l[i]); }          // eq. (5)
-  Mat3<Scalar> P(int i, int j) const {                                        // eq. (5), erratum 1
-    const int other = 3 - i;  // the other hinge vertex: 1 <-> 2
+  Scalar omega(int i, int j) const { return 1 / (t_.h[i] * t_.h[j]); }  // eq. (5)
+  Mat3<Scalar> M(int i) const { return t_.n * t_.m[i].transpose(); }    // eq. (5)
+  Mat3<Scalar> N(int i) const { return M(i) / (t_.l[i] * t_.l[i]); }    // eq. (5)
+  Mat3<Scalar> P(int i, int j) const {                                  // eq. (5), erratum 1
+    const int other = 3 - i;                                            // the other hinge vertex: 1 <-> 2
     return omega(i, j) * t_.cos_alpha[other] * M(j).transpose();
   }
-  Mat3<Scalar> Q(int j) const { return omega(0, j) * M(j); }                  // eq. (5), erratum 2
+  Mat3<Scalar> Q(int j) const { return omega(0, j) * M(j); }  // eq. (5), erratum 2
 
  private:
   const Triangle<Scalar>& t_;
@@ -49,18 +49,18 @@ Mat12<Scalar> hessian(const Stencil<Scalar>& s) {
   Mat12<Scalar> H = Mat12<Scalar>::Zero();
   auto block = [&H](int i, int j) { return H.template block<3, 3>(3 * i, 3 * j); };
 
-  block(0, 0) = -S(b.Q(0));                                                              // eq. (6) H00
-  block(3, 3) = -S(bt.Q(0));                                                             // eq. (6) H33
+  block(0, 0) = -S(b.Q(0));   // eq. (6) H00
+  block(3, 3) = -S(bt.Q(0));  // eq. (6) H33
   // N0 + N~0 is symmetric (proofs/half-hinge.md); its symmetric part, taken explicitly, keeps the
   // rounded diagonal blocks exactly symmetric.
   const Mat3<Scalar> N0_sum = b.N(0) + bt.N(0);
-  const Mat3<Scalar> N0_and_Nt0 = (N0_sum + N0_sum.transpose()) / Scalar(2);  // N0 + N~0
-  block(1, 1) = S(b.P(1, 1)) + S(bt.P(1, 1)) - N0_and_Nt0;                                     // eq. (6) H11
-  block(2, 2) = S(b.P(2, 2)) + S(bt.P(2, 2)) - N0_and_Nt0;                                     // eq. (6) H22
-  block(1, 0) = b.P(1, 0) - b.Q(1);                                                      // eq. (6) H10
-  block(2, 0) = b.P(2, 0) - b.Q(2);                                                      // eq. (6) H20
-  block(1, 3) = bt.P(1, 0) - bt.Q(1);                                                    // eq. (6) H13
-  block(2, 3) = bt.P(2, 0) - bt.Q(2);                                                    // eq. (6) H23
+  const Mat3<Scalar> N0_and_Nt0 = (N0_sum + N0_sum.transpose()) / Scalar(2);                           // N0 + N~0
+  block(1, 1) = S(b.P(1, 1)) + S(bt.P(1, 1)) - N0_and_Nt0;                                             // eq. (6) H11
+  block(2, 2) = S(b.P(2, 2)) + S(bt.P(2, 2)) - N0_and_Nt0;                                             // eq. (6) H22
+  block(1, 0) = b.P(1, 0) - b.Q(1);                                                                    // eq. (6) H10
+  block(2, 0) = b.P(2, 0) - b.Q(2);                                                                    // eq. (6) H20
+  block(1, 3) = bt.P(1, 0) - bt.Q(1);                                                                  // eq. (6) H13
+  block(2, 3) = bt.P(2, 0) - bt.Q(2);                                                                  // eq. (6) H23
   block(1, 2) = b.P(1, 2) + b.P(2, 1).transpose() + bt.P(1, 2) + bt.P(2, 1).transpose() + N0_and_Nt0;  // eq. (6) H12
   // H03 = 0 (eq. (6)): left as zero. The remaining blocks by symmetry, H_ji = H_ij^T.
   block(0, 1) = block(1, 0).transpose();

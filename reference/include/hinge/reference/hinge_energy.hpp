@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "hinge/reference/bend_angle.hpp"
 #include "hinge/core/energy.hpp"
+#include "hinge/reference/bend_angle.hpp"
 #include "hinge/reference/hessian.hpp"
 
 namespace hinge::reference {
@@ -14,8 +14,8 @@ namespace hinge::reference {
 // Algorithm 1 for one hinge: a from the rest stencil, theta_bar and phi_bar from its bend angle.
 // Throws DomainError if `model` is infinite at pi and the rest hinge is folded (eq. (10)).
 template <class Scalar>
-HingeCoefficients<Scalar> rest_coefficients(Model model, const Stencil<Scalar>& rest, const BendAngle<Scalar>& rest_angle,
-                                            const Scalar& k) {
+HingeCoefficients<Scalar> rest_coefficients(Model model, const Stencil<Scalar>& rest,
+                                            const BendAngle<Scalar>& rest_angle, const Scalar& k) {
   if (infinite_at_pi(model) && rest_angle.on_branch_cut) throw_folded_rest(model);
   HingeCoefficients<Scalar> c;
   c.k = k;

@@ -109,13 +109,13 @@ Vec3<Scalar> cross(const Vec3<Scalar>& u, const Vec3<Scalar>& v) {
 // One triangle of the stencil in the paper's labels (y0, y1, y2), edges e_i = y_{i+2} - y_{i+1}.
 template <class Scalar>
 struct Triangle {
-  std::array<Vec3<Scalar>, 3> e;   // edge vectors
-  std::array<Scalar, 3> l;         // |e_i|
-  Scalar double_area;              // 2A = |N|
-  Vec3<Scalar> n;                  // unit normal: n, or n~ for the lower triangle
-  std::array<Scalar, 3> h;         // altitudes h_i = 2A / l_i (Algorithm 2, line 10)
-  std::array<Scalar, 3> cos_alpha; // cos alpha_i = -ê_{i+1} . ê_{i+2}: the angle at y_i (erratum E3)
-  std::array<Vec3<Scalar>, 3> m;   // outward unit edge normals
+  std::array<Vec3<Scalar>, 3> e;    // edge vectors
+  std::array<Scalar, 3> l;          // |e_i|
+  Scalar double_area;               // 2A = |N|
+  Vec3<Scalar> n;                   // unit normal: n, or n~ for the lower triangle
+  std::array<Scalar, 3> h;          // altitudes h_i = 2A / l_i (Algorithm 2, line 10)
+  std::array<Scalar, 3> cos_alpha;  // cos alpha_i = -ê_{i+1} . ê_{i+2}: the angle at y_i (erratum E3)
+  std::array<Vec3<Scalar>, 3> m;    // outward unit edge normals
 };
 
 // `normal` is the unnormalized N (or Nt); `counter_clockwise` says whether the labels run
@@ -141,8 +141,8 @@ Triangle<Scalar> make_triangle(const Vec3<Scalar>& e0, const Vec3<Scalar>& e1, c
 // Fig. 1: both triangles of a hinge, and the unnormalized normals of docs/contract.md.
 template <class Scalar>
 struct Stencil {
-  Vec3<Scalar> N;      // (x1 - x0) x (x2 - x0)
-  Vec3<Scalar> Nt;     // (x2 - x3) x (x1 - x3)
+  Vec3<Scalar> N;          // (x1 - x0) x (x2 - x0)
+  Vec3<Scalar> Nt;         // (x2 - x3) x (x1 - x3)
   Triangle<Scalar> upper;  // T
   Triangle<Scalar> lower;  // T~, in the paper's labels (x3, x1, x2)
 };

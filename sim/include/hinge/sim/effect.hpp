@@ -21,7 +21,7 @@ namespace hinge::sim {
 struct Evaluation {
   unsigned request = 7;
   double energy = 0;
-  Eigen::VectorXd gradient;    // 3n
+  Eigen::VectorXd gradient;     // 3n
   std::vector<double> hessian;  // the Sparsity's values
 };
 

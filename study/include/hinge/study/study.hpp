@@ -26,9 +26,9 @@
 #include <utility>
 #include <vector>
 
+#include "hinge/core/scalar.hpp"
 #include "hinge/io/study_json.hpp"
 #include "hinge/methods/methods.hpp"
-#include "hinge/core/scalar.hpp"
 
 namespace hinge::study {
 
@@ -82,7 +82,6 @@ using MeshRow = io::StudyMeshRow;
 // Runs the study. Throws std::invalid_argument when the methods and scalar types leave nothing to study,
 // hinge::InputError when no input hinge can be certified.
 Study run(const Options& options);
-
 
 // study.md (the tables of study.json, hinge::io::write_study_json, in Markdown), the summary table printed.
 void write_markdown(std::ostream& out, const Study& s);
