@@ -9,7 +9,7 @@ include(FindPackageHandleStandardArgs)
 # hinge_system_library(TARGET HEADER LIBRARY [DEPENDS target...] [HINTS dir...]): TARGET from HEADER and
 # LIBRARY; HEADER "" for a library whose header the compiler finds by itself.
 function(hinge_system_library target header library)
-  cmake_parse_arguments(arg "" "" "DEPENDS;HINTS" ${ARGN})
+  cmake_parse_arguments(arg "OPTIONAL" "" "DEPENDS;HINTS" ${ARGN})
   string(MAKE_C_IDENTIFIER "${target}" var)
   find_library(${var}_LIBRARY ${library} HINTS ${arg_HINTS})
   set(required ${var}_LIBRARY)
@@ -26,7 +26,9 @@ function(hinge_system_library target header library)
       set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${${var}_INCLUDE_DIR}")
     endif()
   endif()
-  set(HingeSystemLibraries_REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS} ${required} PARENT_SCOPE)
+  if(NOT arg_OPTIONAL)
+    set(HingeSystemLibraries_REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS} ${required} PARENT_SCOPE)
+  endif()
 endfunction()
 
 set(HingeSystemLibraries_REQUIRED_VARS)
@@ -37,9 +39,12 @@ hinge_system_library(MPFI::mpfi mpfi.h mpfi DEPENDS MPFR::mpfr)
 hinge_system_library(QD::qd qd/dd_real.h qd)
 # libquadmath lives in GCC's own directories, searched for the library only: its header, which Boost's
 # float128 includes, is the compiler's business (GCC finds it in its own include directory).
-# Only where float128 is built (HINGE_FLOAT128; the installed package sets it as it was built).
+# Required where float128 is built (HINGE_FLOAT128; the installed package sets it as it was built);
+# elsewhere linked when found: Boost.Multiprecision's bin128 calls it wherever the compiler has __float128.
 if(NOT DEFINED HINGE_FLOAT128 OR HINGE_FLOAT128)
   hinge_system_library(Quadmath::quadmath "" quadmath HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES})
+else()
+  hinge_system_library(Quadmath::quadmath "" quadmath HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES} OPTIONAL)
 endif()
 
 find_package_handle_standard_args(HingeSystemLibraries REQUIRED_VARS ${HingeSystemLibraries_REQUIRED_VARS})

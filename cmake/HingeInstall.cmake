@@ -22,7 +22,7 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/hingeConfig.cmake ${CMAKE_CURRENT_BINA
 # libquadmath ship no .pc file, so they are named by -l; the others are in Requires.
 # The prefix is found relative to the .pc file, so the installed tree can move.
 file(RELATIVE_PATH HINGE_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
-if(HINGE_FLOAT128)
+if(TARGET Quadmath::quadmath)
   set(HINGE_PC_QUADMATH "-lquadmath ")
 else()
   set(HINGE_PC_QUADMATH "")
