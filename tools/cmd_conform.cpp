@@ -218,10 +218,16 @@ int run_mesh(const ConformOptions& o) {
 }
 
 int write_vectors(const ConformOptions& o) {
-  Progress progress("hinge conform: vectors", conf::inputs().size());
-  conf::write_vectors(o.write_vectors, [&](std::size_t done, std::size_t) { progress.update(done); });
-  std::cerr << "hinge conform: wrote " << conf::inputs().size() << " hinge cases and " << 2 * conf::meshes().size()
-            << " mesh cases under " << o.write_vectors << "\n";
+  std::optional<Progress> progress;
+  const conf::VectorsSummary s = conf::write_vectors(o.write_vectors, [&](std::size_t done, std::size_t total) {
+    if (!progress) progress.emplace("hinge conform: vectors", total);
+    progress->update(done);
+  });
+  std::cerr << "hinge conform: wrote under " << o.write_vectors << ": " << s.quick << " hinge cases (hinges/), "
+            << s.float32 << " (hinges-float32/), " << s.deep << " (deep/: " << s.deep_draws << " draws, "
+            << s.deep_invalid << " invalid, " << s.deep_uncertified << " uncertified dropped), " << s.deep_float32
+            << " (deep-float32/: " << s.deep_float32_draws << " draws, " << s.deep_float32_invalid << " invalid, "
+            << s.deep_float32_uncertified << " uncertified dropped), " << s.meshes << " mesh cases\n";
   return exit_done;
 }
 

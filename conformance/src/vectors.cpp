@@ -1,8 +1,11 @@
 // The committed conformance vectors, written (hinge/conformance/vectors.hpp, docs/conformance-format.md).
+// Every hinge case certified by certified_with_conditioning (stages 1 and 2 of the oracle, so that "bits"
+// records the enclosures' precision), in binary64 or binary32.
 #include <stdexcept>
 
 #include "hinge/conformance/grading.hpp"
 #include "hinge/conformance/vectors.hpp"
+#include "hinge/core/errors.hpp"
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/jsonl.hpp"
 #include "hinge/io/matrix_market.hpp"
@@ -38,25 +41,74 @@ std::string hinge_line(const Expected& e) {
   return line;
 }
 
+// One set's file per category, in the order of `cases` (category by category as generated). A case that
+// cannot be certified is an error (`required`) or dropped and counted.
+struct SetWriter {
+  const std::filesystem::path& dir;
+  const std::function<void(std::size_t, std::size_t)>& progress;
+  std::size_t done = 0, total = 0;
+
+  // Returns the cases written; adds the dropped ones to `invalid` and `uncertified`.
+  std::size_t write(const std::string& subdir, const std::vector<std::string>& file_categories,
+                    const std::vector<Case>& cases, bool binary32, bool required, std::size_t& invalid,
+                    std::size_t& uncertified) {
+    std::filesystem::create_directories(dir / subdir);
+    Options options;
+    options.binary32 = binary32;
+    std::size_t written = 0;
+    for (const std::string& category : file_categories) {
+      io::AtomicFile f((dir / subdir / (category + ".jsonl")).string());
+      for (const Case& c : cases) {
+        if (c.category != category) continue;
+        if (progress) progress(++done, total);
+        Expected e{c, {}, {}};
+        try {
+          ConditionedTheta t = certified_with_conditioning(c.x, options);
+          e.values = std::move(t.values);
+          e.conditioning = t.conditioning;
+        } catch (const InputError&) {
+          if (required) throw;
+          ++invalid;
+          continue;
+        } catch (const DomainError&) {
+          if (required) throw;
+          ++invalid;
+          continue;
+        }
+        if (!e.values.uncertified.empty()) {
+          if (required) throw std::logic_error("conformance case " + c.id + " is not certified");
+          ++uncertified;
+          continue;
+        }
+        f.stream() << hinge_line(e);
+        ++written;
+      }
+      f.commit();
+    }
+    return written;
+  }
+};
+
 }  // namespace
 
-void write_vectors(const std::filesystem::path& dir, const std::function<void(std::size_t, std::size_t)>& progress) {
+VectorsSummary write_vectors(const std::filesystem::path& dir,
+                             const std::function<void(std::size_t, std::size_t)>& progress) {
   namespace fs = std::filesystem;
-  fs::create_directories(dir / "hinges");
   fs::create_directories(dir / "meshes");
-  const std::vector<Case> cases = inputs();
-  std::size_t done = 0;
-  for (const std::string& category : categories()) {
-    io::AtomicFile f((dir / "hinges" / (category + ".jsonl")).string());
-    for (const Case& c : cases) {
-      if (c.category != category) continue;
-      const Expected e = expected(c);
-      if (!e.values.uncertified.empty()) throw std::logic_error("conformance case " + c.id + " is not certified");
-      f.stream() << hinge_line(e);
-      if (progress) progress(++done, cases.size());
-    }
-    f.commit();
-  }
+  const std::vector<Case> quick = inputs(), float32 = float32_inputs(), deep = deep_inputs(),
+                          deep32 = deep_float32_inputs();
+  VectorsSummary summary;
+  SetWriter w{dir, progress};
+  w.total = quick.size() + float32.size() + deep.size() + deep32.size();
+  std::size_t none = 0;
+  summary.quick = w.write("hinges", categories(), quick, false, true, none, none);
+  summary.float32 = w.write("hinges-float32", categories(), float32, true, true, none, none);
+  summary.deep_draws = summary.deep_float32_draws = hard_families().size() * deep_per_family;
+  summary.deep_invalid = summary.deep_draws - deep.size();  // the draws hard_cases dropped
+  summary.deep = w.write("deep", hard_families(), deep, false, false, summary.deep_invalid, summary.deep_uncertified);
+  summary.deep_float32_invalid = summary.deep_float32_draws - deep32.size();
+  summary.deep_float32 = w.write("deep-float32", hard_families(), deep32, true, false, summary.deep_float32_invalid,
+                                 summary.deep_float32_uncertified);
   io::AtomicFile index((dir / "meshes" / "meshes.jsonl").string());
   for (const MeshCase& m : meshes()) {
     write_mesh(dir / "meshes" / (m.name + ".obj"), m.deformed, "hinge conformance mesh " + m.name + " (deformed)");
@@ -92,6 +144,8 @@ void write_vectors(const std::filesystem::path& dir, const std::function<void(st
     }
   }
   index.commit();
+  summary.meshes = 2 * meshes().size();
+  return summary;
 }
 
 }  // namespace hinge::conformance

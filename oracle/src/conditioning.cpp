@@ -77,10 +77,13 @@ double scaled_norm(const double* v, std::size_t n) {
   return largest * std::sqrt(sum);
 }
 
-ConditionedTheta certified_with_conditioning(const std::array<double, 12>& x) {
+ConditionedTheta certified_with_conditioning(const std::array<double, 12>& x, const Options& options) {
   ConditionedTheta e;
   const ScaledHinge s = scale_exactly(x);
-  e.values = certify(exact_hinge(s, true));
+  const ExactHinge exact = exact_hinge(s, true);
+  Options binary64 = options;
+  binary64.binary32 = false;
+  e.values = certify(exact, binary64);
   Int longest_squared;
   Conditioning& k = e.conditioning;
   k.length = longest_edge(s, longest_squared);
@@ -90,6 +93,7 @@ ConditionedTheta certified_with_conditioning(const std::array<double, 12>& x) {
   const double sizes[3] = {scaled_norm(&e.values.theta, 1), scaled_norm(e.values.grad.data(), 12),
                            scaled_norm(e.values.hess.data(), 144)};
   for (int g = 0; g < 3; ++g) k.kappa[g] = sizes[g] == 0 ? 1.0 : k.scale[g] / sizes[g];
+  if (options.binary32) e.values = certify(exact, options);
   return e;
 }
 

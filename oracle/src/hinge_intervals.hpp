@@ -31,19 +31,44 @@ Angle angle(const ExactHinge& e, const Interval& l0);
 // X_a^2 nn_b tt_b == X_b^2 nn_a tt_a (equal cosines).
 bool same_angle(const ExactHinge& a, const ExactHinge& b);
 
-// Rounding an enclosure to nearest: `rounded` when both end points round to the same double (then every
-// point does, rounding being monotone), `overflow` when both round to the same infinity, else `open`
-// (lo and hi are the end points rounded to nearest).
-enum class Verdict { rounded, overflow, open };
+// The format outputs are rounded to (Options::binary32): binary64 with its whole range (subnormals
+// included, overflow to infinity), or binary32 with a 24-bit significand, its values held in doubles,
+// whose outputs must be zero or normal floats.
+enum class Format { binary64, binary32 };
+
+// The value of `x` rounded to nearest (ties to even) in the format; for binary32 with an unbounded
+// exponent (so 2^128 above FLT_MAX, values below FLT_MIN kept as 24-bit numbers), as a double (exact
+// within double's range).
+double round_to(mpfr_srcptr x, Format format);
+
+// Rounding an enclosure to nearest: `rounded` when both end points round to the same value of the format
+// (then every point does, rounding being monotone); `overflow` when they round to the same infinity
+// (binary64) or both to at least 2^128 in magnitude with one sign (binary32); `underflow` (binary32 only)
+// when both round below FLT_MIN = 2^-126 in magnitude and the enclosure is not the point zero (every
+// nonzero point of it is outside the normal range: the oracle encloses nonzero values only); else `open`
+// (lo and hi are the end points rounded).
+enum class Verdict { rounded, overflow, underflow, open };
 struct Rounding {
   Verdict verdict = Verdict::open;
   double value = 0;
   double lo = 0, hi = 0;
-  bool tie = false;  // rounded from a point enclosure exactly halfway between two doubles (to even)
+  bool tie = false;  // rounded from a point enclosure exactly halfway between two values (to even)
 };
-Rounding round_enclosure(const Interval& v);
+Rounding round_enclosure(const Interval& v, Format format = Format::binary64);
 
-// The flag of an output left open at the precision cap.
-Uncertified flag(const std::string& name, const Interval& v);
+// The verdict on a value already rounded to the format: `rounded`, `overflow` or `underflow`.
+Verdict range_of(double rounded, Format format);
+
+// Where rounding switches between a < b, two adjacent values of the format (rounded end points of an
+// enclosure): `boundary` = their midpoint (for binary64's pair (DBL_MAX, inf), 2^1024 - 2^970, where
+// rounding overflows), exact at 64 bits, and `at_boundary` the value a tie there rounds to (the even one).
+// False when a and b are not adjacent (the enclosure is still too wide).
+bool rounding_boundary(double a, double b, Format format, Real& boundary, double& at_boundary);
+
+// The branch cut theta = +pi (docs/contract.md), rounded to the format.
+double branch_cut_theta(Format format);
+
+// The flag of an output left open at the precision cap (its nearest value rounded to the format).
+Uncertified flag(const std::string& name, const Interval& v, Format format = Format::binary64);
 
 }  // namespace hinge::oracle::detail

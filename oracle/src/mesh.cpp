@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -80,6 +81,7 @@ std::string entry_name(Eigen::Index r, Eigen::Index c) {
 
 CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
                              const EnergyParameters& parameters, unsigned request, const Options& options) {
+  if (options.binary32) throw std::invalid_argument("certified_mesh: Options::binary32 is for one hinge only");
   check_same_mesh(deformed, topology, "deformed");
   check_same_mesh(rest, topology, "rest");
   if (options.fast_path)

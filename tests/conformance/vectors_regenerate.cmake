@@ -1,6 +1,7 @@
 # cmake -DHINGE=hinge -DWORK=dir -DCOMMITTED=conformance -P vectors_regenerate.cmake
 # Regenerates the conformance vectors and compares every generated file with the committed one, byte
-# for byte (docs/conformance-format.md: "Regenerating").
+# for byte, and every committed vector (hinges/, hinges-float32/, deep/, deep-float32/, meshes/) with a
+# generated one (docs/conformance-format.md: "Regenerating").
 file(REMOVE_RECURSE ${WORK})
 execute_process(COMMAND ${HINGE} conform --write-vectors ${WORK} RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
@@ -21,6 +22,15 @@ foreach(f IN LISTS generated)
   if(NOT same EQUAL 0)
     list(APPEND differ ${f})
   endif()
+endforeach()
+# A committed vector the generator no longer writes is stale (and would still be compiled in).
+foreach(set_dir hinges hinges-float32 deep deep-float32 meshes)
+  file(GLOB committed_files RELATIVE ${COMMITTED} ${COMMITTED}/${set_dir}/*)
+  foreach(f IN LISTS committed_files)
+    if(NOT EXISTS ${WORK}/${f})
+      list(APPEND differ "${f} (committed, not generated)")
+    endif()
+  endforeach()
 endforeach()
 if(differ)
   message(FATAL_ERROR "regenerated vectors differ from conformance/: ${differ}\n(regenerate: hinge conform --write-vectors conformance)")

@@ -35,6 +35,26 @@ std::vector<Case> inputs();
 const std::vector<std::string>& hard_families();
 std::vector<Case> hard_cases(std::uint64_t seed, int per_family);
 
+// The deep set's hinges (docs/conformance-format.md, "deep/"): hard_cases(deep_seed, deep_per_family), each
+// with the id "<family>/deep-NNNN-<tag>" (NNNN its index in its family) and its family as category.
+inline constexpr std::uint64_t deep_seed = 0x5eedde3d;
+inline constexpr int deep_per_family = 130;
+std::vector<Case> deep_inputs();
+
+// float32: every coordinate zero or a normal float (held in the double), every output certified in
+// binary32 (oracle.hpp, Options::binary32) zero or a normal float.
+// - float32_inputs(): the nine categories of inputs(), about as many hinges each, built within float32's
+//   range (scales 2^-50 to 2^50, offsets to 2^20, angles to 1e-30 from flat and from folded, caps to
+//   1e-12, spikes to 1e12, hinge edges to 2^-60 of the others);
+// - hard_cases_float32(): the eight families of hard_cases within those ranges (combined: needles to 1e-4,
+//   offset to 1e3 with the cap at least 1e-5 of it, scaled 2^-40 to 2^40), invalid draws dropped, ids
+//   "family/N-tag";
+// - deep_float32_inputs(): the deep float32 set's hinges, hard_cases_float32(deep_seed, deep_per_family)
+//   identified as deep_inputs() identifies its own.
+std::vector<Case> float32_inputs();
+std::vector<Case> hard_cases_float32(std::uint64_t seed, int per_family);
+std::vector<Case> deep_float32_inputs();
+
 // The meshes (with boundaries) whose hinges form the category boundary-meshes, and whose energies,
 // gradients and Hessians are conformance vectors of their own.
 struct MeshCase {

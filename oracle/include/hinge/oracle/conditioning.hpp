@@ -21,13 +21,15 @@ struct Conditioning {
   std::array<double, 3> kappa{};
 };
 
-// Certified outputs of `x` (stages 1 and 2: the same doubles as the fast path gives) and their conditioning.
-// Throws as certified_theta_derivatives does.
+// Certified outputs of `x` (stages 1 and 2: the same doubles as the fast path gives; with options.binary32
+// the floats) and their conditioning. The condition numbers are those of the exact outputs, computed from
+// the outputs certified in binary64 whatever the format of `values`. Throws as certified_theta_derivatives
+// does.
 struct ConditionedTheta {
   CertifiedTheta values;
   Conditioning conditioning;
 };
-ConditionedTheta certified_with_conditioning(const std::array<double, 12>& x);
+ConditionedTheta certified_with_conditioning(const std::array<double, 12>& x, const Options& options = {});
 
 // ||v||_2 without overflow or underflow: scaled by the largest magnitude, in a fixed order of operations;
 // NaN when an entry is.

@@ -33,7 +33,8 @@ struct CertifiedMesh {
   double gradient_contributions = 0, hessian_contributions = 0;
 };
 
-// Throws hinge::InputError / hinge::DomainError naming the hinge, as hinge::reference::assemble does.
+// Throws hinge::InputError / hinge::DomainError naming the hinge, as hinge::reference::assemble does;
+// std::invalid_argument with Options::binary32 (rounding to float is offered per hinge only).
 CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
                              const EnergyParameters& parameters, unsigned request = want_all,
                              const Options& options = {});

@@ -17,6 +17,12 @@
 //    within 2^-max_bits of a midpoint) is reported in `uncertified` with its enclosure, never silently
 //    rounded.
 //
+// With Options::binary32 every output is instead the float nearest to the exact value (ties to even), held
+// in the double fields: stages 1 and 2 only (the fast path decides roundings to double), the enclosures'
+// end points rounded to 24 bits, and an entry whose enclosure rounds to two adjacent floats decided
+// exactly against their midpoint (a double), as above. Rounding the certified double to float instead
+// would be wrong exactly where that double is itself a midpoint between two floats (double rounding).
+//
 // Variables: x0, x1, x2, x3 (12); gradient 12, Hessian 144 row-major (docs/contract.md).
 #pragma once
 
@@ -33,6 +39,10 @@ struct Options {
   unsigned start_bits = 128;  // first working precision
   unsigned max_bits = 4096;   // the precision cap (documented in oracle/README.md)
   bool fast_path = true;      // try the double-double fast path first (certified_theta_derivatives)
+  // Round to binary32 instead of binary64 (the header comment): a nonzero output below FLT_MIN = 2^-126 in
+  // magnitude, or one that rounds above FLT_MAX, is a hinge::DomainError "<what> is outside the normal range
+  // of float"; the branch cut is +pi rounded to float. fast_path is then ignored.
+  bool binary32 = false;
 };
 
 // Which stages a hinge's certification needed.
@@ -57,15 +67,16 @@ struct CertifiedTheta {
   Path path = Path::interval;
   unsigned bits = 0;             // largest working precision of the enclosures (0: none needed)
   std::size_t exact_bits = 0;    // size of the largest integer of the exact stage (0: not run)
-  unsigned ties = 0;             // outputs exactly halfway between two doubles (rounded to even)
+  unsigned ties = 0;             // outputs exactly halfway between two values of the format (rounded to even)
   unsigned decided_exactly = 0;  // outputs whose enclosure straddled a midpoint, decided in integers
   std::vector<Uncertified> uncertified;
 };
 
 // Throws hinge::InputError (non-finite or degenerate input, the reference's messages) or
-// hinge::DomainError (an exact output outside the range of double). With options.fast_path (the default)
-// the fast path (proofs/oracle-fast-path.md: eqs. (4)-(6) in double-double with a rigorous error bound)
-// decides what it can, the exact stage and the enclosures the rest: the same doubles either way.
+// hinge::DomainError (an exact output outside the range of double; with binary32, of normal floats).
+// With options.fast_path (the default) the fast path (proofs/oracle-fast-path.md: eqs. (4)-(6) in
+// double-double with a rigorous error bound) decides what it can, the exact stage and the enclosures the
+// rest: the same doubles either way.
 CertifiedTheta certified_theta_derivatives(const std::array<double, 12>& x, const Options& options = {});
 // Stages 1 and 2 only (no fast path): path is `exact` or `interval`.
 CertifiedTheta certify(const ExactHinge& exact, const Options& options = {});
