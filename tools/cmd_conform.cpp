@@ -1,6 +1,6 @@
 // hinge conform: check another implementation against certified values (docs/contract.md; docs/conformance.md).
 //   hinge conform --inputs [--output FILE]                       the conformance inputs {"id", "category", "x"}
-//   hinge conform --candidate FILE [--json FILE]                 outputs in the hinge eval format, same ids
+//   hinge conform --candidate FILE [--json FILE] [--report F.html]  outputs in the hinge eval format, same ids
 //   hinge conform --plugin LIB.so [--symbol NAME] [--save FILE]  a C function (hinge/candidate.h)
 //   hinge conform --method M [--scalar S] [--save FILE]          one of hinge eval's methods, in process
 //   hinge conform --mesh X.obj [--rest R.obj] --energy E --k K --hessian H.mtx [--gradient G.txt]
@@ -15,8 +15,10 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "hinge/conformance/html_report.hpp"
 #include "hinge/conformance/plugin.hpp"
 #include "hinge/conformance/report.hpp"
+#include "hinge/conformance/sets.hpp"
 #include "hinge/conformance/vectors.hpp"
 #include "hinge/core/bending_problem.hpp"
 #include "hinge/core/errors.hpp"
@@ -38,7 +40,9 @@ namespace conf = conformance;
 struct ConformOptions {
   bool inputs = false, verbose = false;
   std::string output, candidate, plugin, symbol = "hinge_candidate", save, write_vectors, method, scalar = "double";
-  std::string json;  // --json FILE: the report as JSON
+  std::string json;    // --json FILE: the report as JSON
+  std::string report;  // --report FILE.html: the report as a self-contained page
+  std::string depth = "quick";
   std::vector<std::string> categories;
   conf::Policy policy;
   double case_timeout = 10;  // seconds, --plugin
@@ -52,15 +56,18 @@ struct Unusable : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::vector<conf::Case> selected_inputs(const ConformOptions& o) {
-  std::vector<conf::Case> all = conf::inputs();
-  if (o.categories.empty()) return all;
+// The committed set's cases with their expected values (--depth), those of the chosen categories.
+std::vector<conf::Expected> selected_expected(const ConformOptions& o) {
+  const conf::Depth depth = conf::parse_depth(o.depth);  // std::invalid_argument: usage
+  const std::vector<std::string> known = conf::set_categories(conf::Dtype::float64, depth);
   for (const auto& c : o.categories)
-    if (std::find(conf::categories().begin(), conf::categories().end(), c) == conf::categories().end())
+    if (std::find(known.begin(), known.end(), c) == known.end())
       throw std::invalid_argument("unknown category '" + c + "'");
-  std::vector<conf::Case> some;
-  for (auto& c : all)
-    if (std::find(o.categories.begin(), o.categories.end(), c.category) != o.categories.end()) some.push_back(c);
+  std::vector<conf::Expected> some;
+  for (const conf::Expected& e : conf::conformance_set(conf::Dtype::float64, depth))
+    if (o.categories.empty() ||
+        std::find(o.categories.begin(), o.categories.end(), e.input.category) != o.categories.end())
+      some.push_back(e);
   return some;
 }
 
@@ -121,17 +128,18 @@ int run_cases(const ConformOptions& o) {
   } catch (const conf::PluginError& e) {
     throw Unusable(e.what());
   }
-  std::optional<io::AtomicFile> saved, json;
+  std::optional<io::AtomicFile> saved, json, html;
   if (!o.save.empty()) saved.emplace(o.save);
   if (!o.json.empty()) json.emplace(o.json);
+  if (!o.report.empty()) html.emplace(o.report);
 
-  const std::vector<conf::Case> cases = selected_inputs(o);
-  std::vector<conf::CaseOutcome> outcomes;
+  std::vector<conf::Expected> cases = selected_expected(o);
+  std::vector<conf::CandidateResult> results;
   std::vector<std::string> not_survived;  // cases on which the plugin crashed or timed out
   Progress progress("hinge conform: cases", cases.size());
   std::size_t unknown = file.size();
-  for (const conf::Case& c : cases) {
-    const conf::Expected e = conf::expected(c);
+  for (const conf::Expected& e : cases) {
+    const conf::Case& c = e.input;
     conf::CandidateResult r;
     if (plugin) {
       r = (*plugin)(c.x);
@@ -143,32 +151,41 @@ int run_cases(const ConformOptions& o) {
       --unknown;
     }
     if (saved) saved->stream() << io::eval_output_line(c.id, r) << '\n';
-    outcomes.push_back(conf::compare(e, r, o.policy));
-    progress.update(outcomes.size());
+    results.push_back(std::move(r));
+    progress.update(results.size());
   }
   if (saved) saved->commit();
   if (!o.candidate.empty() && unknown > 0 && o.categories.empty())
     std::cerr << "hinge conform: " << unknown
               << " line(s) of the candidate have ids that are not conformance cases (ignored)\n";
-  if (o.verbose) print_cases(std::cout, outcomes);
-  const bool pass = conf::print_report(std::cout, outcomes, o.policy, name);
+  conf::Grading grading;
+  grading.policy = o.policy;
+  const conf::Report report =
+      conf::make_report(name, std::move(cases), std::move(results), grading, conf::contract_stencil, o.depth);
+  if (o.verbose) print_cases(std::cout, report.outcomes);
+  conf::print_report(std::cout, report);
   if (json) {
-    conf::write_json_report(json->stream(), outcomes, o.policy, name);
+    conf::write_json_report(json->stream(), report);
     json->commit();
+  }
+  if (html) {
+    conf::write_html_report(html->stream(), report);
+    html->commit();
   }
   if (!not_survived.empty()) {
     std::cout << "\nthe plugin did not survive " << not_survived.size()
               << " case(s) (each failed; its process was started again):\n";
     for (const auto& line : not_survived) std::cout << "  " << line << "\n";
   }
-  return pass && not_survived.empty() ? exit_done : exit_invalid_input;
+  return report.passed && not_survived.empty() ? exit_done : exit_invalid_input;
 }
 
 int write_inputs(const ConformOptions& o) {
   std::optional<io::AtomicFile> file;
   std::ostream* out = &std::cout;
   if (!o.output.empty() && o.output != "-") out = &file.emplace(o.output).stream();
-  for (const conf::Case& c : selected_inputs(o)) *out << io::input_line(c.id, c.category, c.x) << '\n';
+  for (const conf::Expected& e : selected_expected(o))
+    *out << io::input_line(e.input.id, e.input.category, e.input.x) << '\n';
   out->flush();
   if (file) file->commit();
   return *out ? exit_done : exit_invalid_input;
@@ -259,6 +276,13 @@ Action add_conform(CLI::App& app) {
   cmd->add_option("--json", o->json,
                   "With --candidate, --plugin or --method: also write the report as JSON here "
                   "(per category and per case: errors, tolerances, kappa, tier)");
+  cmd->add_option(
+      "--report", o->report,
+      "With --candidate, --plugin or --method: also write the report as one self-contained HTML page\n"
+      "(tiers, the diagnosis, error against condition number, the worst case's Hessian errors, a reproducer)");
+  cmd->add_option("--depth", o->depth,
+                  "quick (the conformance set) or deep (and at least 1000 more hinges of the hard families)")
+      ->capture_default_str();
   cmd->add_option("--category", o->categories, "Only these categories (repeatable)");
   cmd->add_flag("--verbose", o->verbose, "Also print every case's errors and tolerances");
   cmd->add_option("--tolerance-base", o->policy.base, "Tolerance policy: units of 2^-53 granted to every case")
@@ -275,8 +299,11 @@ Action add_conform(CLI::App& app) {
       "Reports, per category, the median and worst normwise error of theta, grad and hess in units of 2^-53,\n"
       "the worst case (largest error / tolerance), missing and non-finite results. A case passes when each\n"
       "output's error is at most base + c kappa (docs/conformance.md), and the tier each category reaches:\n"
-      "correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), policy, fail. Exit: 0 pass, 1 fail, 2 usage\n"
-      "error or unreadable candidate.");
+      "correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), policy, approximate (outside the policy but\n"
+      "within 2^-20 (1 + kappa) relative: the formula looks right and is not accurate), fail. A failing category\n"
+      "is diagnosed: the usual convention mismatches (sign, degrees, unsigned angle, vertex order, Hessian\n"
+      "triangle, ...) that explain it are named with what to change. Exit: 0 pass, 1 fail (approximate\n"
+      "included), 2 usage error or unreadable candidate.");
   return [o]() -> int {
     const int modes = int(o->inputs) + int(!o->candidate.empty()) + int(!o->plugin.empty()) + int(!o->method.empty()) +
                       int(!o->write_vectors.empty()) + int(!o->mesh.empty());
@@ -289,8 +316,8 @@ Action add_conform(CLI::App& app) {
       std::cerr << "hinge conform: --save goes with --plugin or --method\n";
       return exit_usage;
     }
-    if (!o->json.empty() && o->candidate.empty() && o->plugin.empty() && o->method.empty()) {
-      std::cerr << "hinge conform: --json goes with --candidate, --plugin or --method\n";
+    if ((!o->json.empty() || !o->report.empty()) && o->candidate.empty() && o->plugin.empty() && o->method.empty()) {
+      std::cerr << "hinge conform: --json and --report go with --candidate, --plugin or --method\n";
       return exit_usage;
     }
     try {

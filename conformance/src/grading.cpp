@@ -10,7 +10,7 @@
 namespace hinge::conformance {
 namespace {
 
-constexpr double u = 0x1p-53;
+constexpr double mesh_unit = 0x1p-53;  // the mesh comparisons: units of 2^-53
 constexpr double infinity = std::numeric_limits<double>::infinity();
 using oracle::scaled_norm;
 
@@ -38,7 +38,7 @@ Expected expected(const Case& c) {
   return {c, std::move(t.values), t.conditioning};
 }
 
-double normwise_error(const double* candidate, const double* certified, std::size_t n, double scale_if_zero) {
+double normwise_error(const double* candidate, const double* certified, std::size_t n, double scale_if_zero, double u) {
   std::array<double, 144> difference{};
   if (n > difference.size()) throw std::invalid_argument("normwise_error: at most 144 values");
   for (std::size_t i = 0; i < n; ++i) difference[i] = candidate[i] - certified[i];
@@ -76,7 +76,7 @@ MeshComparison compare_mesh_hessian(const CertifiedMesh& m, const Eigen::SparseM
   const double size = symmetric_frobenius(m.rounded.hessian);
   MeshComparison c;
   c.kappa_sum = hessian_kappa_sum(m);
-  c.error = symmetric_frobenius(difference) / (size > 0 ? size : 1) / u;
+  c.error = symmetric_frobenius(difference) / (size > 0 ? size : 1) / mesh_unit;
   c.tolerance = mesh_base * c.kappa_sum;
   c.pass = std::isfinite(c.error) && c.error <= c.tolerance;
   return c;
@@ -90,36 +90,71 @@ MeshComparison compare_mesh_gradient(const CertifiedMesh& m, const std::vector<d
   const double size = scaled_norm(want.data(), want.size());
   MeshComparison c;
   c.kappa_sum = gradient_kappa_sum(m);
-  c.error = scaled_norm(difference.data(), difference.size()) / (size > 0 ? size : 1) / u;
+  c.error = scaled_norm(difference.data(), difference.size()) / (size > 0 ? size : 1) / mesh_unit;
   c.tolerance = mesh_base * c.kappa_sum;
   c.pass = std::isfinite(c.error) && c.error <= c.tolerance;
   return c;
 }
 
-CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& policy) {
+double unit_roundoff(Dtype d) { return d == Dtype::float32 ? 0x1p-24 : 0x1p-53; }
+
+const char* dtype_name(Dtype d) { return d == Dtype::float32 ? "float32" : "float64"; }
+
+Dtype parse_dtype(const std::string& name) {
+  if (name == "float64") return Dtype::float64;
+  if (name == "float32") return Dtype::float32;
+  throw std::invalid_argument("unknown dtype '" + name + "' (expected \"float64\" or \"float32\")");
+}
+
+// 2^-20 (float64) or 2^-8 (float32) relative, in units of u: the formula is right to about a third of the
+// format's digits.
+double approximate_bound(Dtype d) { return d == Dtype::float32 ? 0x1p16 : 0x1p33; }
+
+CandidateResult rounded_to(Dtype d, CandidateResult r) {
+  if (d == Dtype::float64) return r;
+  const auto to_float = [](double& v) { v = static_cast<double>(static_cast<float>(v)); };
+  to_float(r.theta);
+  for (double& v : r.grad) to_float(v);
+  for (double& v : r.hess) to_float(v);
+  return r;
+}
+
+CaseOutcome compare(const Expected& e, const CandidateResult& candidate, const Grading& grading) {
+  const double unit = unit_roundoff(grading.dtype);
   CaseOutcome o;
   o.id = e.input.id;
   o.category = e.input.category;
-  o.status = r.status;
+  o.status = candidate.status;
   o.kappa = e.conditioning.kappa;
-  for (int g = 0; g < 3; ++g) o.tolerance[g] = policy.base + policy.c * o.kappa[g];
-  if (r.status != CandidateResult::Status::ok) {
+  for (int g = 0; g < 3; ++g) o.tolerance[g] = grading.policy.base + grading.policy.c * o.kappa[g];
+  if (candidate.status != CandidateResult::Status::ok) {
     o.error = {infinity, infinity, infinity};
+    for (int g = 0; g < 3; ++g)
+      if (!grading.given[g]) o.error[g] = std::numeric_limits<double>::quiet_NaN();
     o.ratio = infinity;
     return o;
   }
+  const CandidateResult r = rounded_to(grading.dtype, candidate);
   o.ratio = -1;
+  bool equal = true, approximate = true;
+  double worst = 0;
   for (int g = 0; g < 3; ++g) {
+    if (!grading.given[g]) {
+      o.error[g] = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
     const double* want = group_data(e.values, g);
     const double* got = group_data(r, g);
-    std::array<double, 144> difference{};
     int largest = 0;
     for (std::size_t i = 0; i < group_size[g]; ++i) {
-      difference[i] = got[i] - want[i];
-      if (std::fabs(difference[i]) > std::fabs(difference[largest]) || std::isnan(difference[i]))
+      const double difference = got[i] - want[i];
+      if (std::fabs(difference) > std::fabs(got[largest] - want[largest]) || std::isnan(difference))
         largest = static_cast<int>(i);
+      equal = equal && got[i] == want[i];
     }
-    o.error[g] = normwise_error(got, want, group_size[g], e.conditioning.scale[g]);
+    o.error[g] = normwise_error(got, want, group_size[g], e.conditioning.scale[g], unit);
+    worst = std::max(worst, o.error[g]);
+    approximate = approximate && o.error[g] <= approximate_bound(grading.dtype) * (1 + o.kappa[g]);
     const double ratio = o.error[g] / o.tolerance[g];
     if (ratio > o.ratio) {
       o.ratio = ratio;
@@ -130,15 +165,12 @@ CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& p
     }
   }
   o.pass = o.ratio <= 1;
-  bool equal = true;
-  for (int g = 0; g < 3; ++g)
-    for (std::size_t i = 0; i < group_size[g]; ++i) equal = equal && group_data(r, g)[i] == group_data(e.values, g)[i];
-  const double worst = std::max({o.error[0], o.error[1], o.error[2]});
-  o.tier = !o.pass      ? Tier::fail
-           : equal      ? Tier::correctly_rounded
-           : worst <= 1 ? Tier::faithful
-           : worst <= 4 ? Tier::four_units
-                        : Tier::policy;
+  o.tier = o.pass        ? (equal        ? Tier::correctly_rounded
+                            : worst <= 1 ? Tier::faithful
+                            : worst <= 4 ? Tier::four_units
+                                         : Tier::policy)
+           : approximate ? Tier::approximate
+                         : Tier::fail;
   return o;
 }
 
@@ -148,9 +180,18 @@ const char* tier_name(Tier t) {
     case Tier::faithful: return "faithful";
     case Tier::four_units: return "4u";
     case Tier::policy: return "policy";
+    case Tier::approximate: return "approximate";
     case Tier::fail: return "fail";
   }
   return "?";
+}
+
+Tier parse_tier(const std::string& name) {
+  for (const Tier t :
+       {Tier::correctly_rounded, Tier::faithful, Tier::four_units, Tier::policy, Tier::approximate, Tier::fail})
+    if (name == tier_name(t)) return t;
+  throw std::invalid_argument("unknown tier '" + name +
+                              "' (expected correctly-rounded, faithful, 4u, policy, approximate or fail)");
 }
 
 }  // namespace hinge::conformance

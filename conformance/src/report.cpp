@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <stdexcept>
 
 namespace hinge::conformance {
 namespace {
@@ -17,6 +19,7 @@ std::string entry_name(int group, int entry) {
 
 std::string fixed(double v, int digits = 1) {
   if (std::isinf(v)) return "inf";
+  if (std::isnan(v)) return "-";
   char buffer[64];
   if (v >= 1e7) std::snprintf(buffer, sizeof buffer, "%.3g", v);
   else std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
@@ -28,6 +31,8 @@ std::string exact(double v) {
   std::snprintf(buffer, sizeof buffer, "%.17g", v);
   return buffer;
 }
+
+const char* unit_name(Dtype d) { return d == Dtype::float32 ? "2^-24" : "2^-53"; }
 
 const char* status_name(CandidateResult::Status s) {
   switch (s) {
@@ -42,12 +47,16 @@ const char* status_name(CandidateResult::Status s) {
 }  // namespace
 
 std::vector<CategorySummary> summarize(const std::vector<CaseOutcome>& outcomes) {
+  std::vector<std::string> order;  // categories in the order of their first case
+  for (const CaseOutcome& o : outcomes)
+    if (std::find(order.begin(), order.end(), o.category) == order.end()) order.push_back(o.category);
   std::vector<CategorySummary> out;
-  for (const std::string& category : categories()) {
+  for (const std::string& category : order) {
     CategorySummary s;
     s.category = category;
     std::array<std::vector<double>, 3> errors;
-    for (const CaseOutcome& o : outcomes) {
+    for (std::size_t i = 0; i < outcomes.size(); ++i) {
+      const CaseOutcome& o = outcomes[i];
       if (o.category != category) continue;
       ++s.cases;
       if (o.status == CandidateResult::Status::missing || o.status == CandidateResult::Status::error) ++s.missing;
@@ -58,11 +67,15 @@ std::vector<CategorySummary> summarize(const std::vector<CaseOutcome>& outcomes)
       if (s.worst_id.empty() || o.ratio > s.worst_ratio) {
         s.worst_ratio = o.ratio;
         s.worst_id = o.id;
+        s.worst_index = i;
       }
     }
-    if (s.cases == 0) continue;
     for (int g = 0; g < 3; ++g) {
       auto& v = errors[g];
+      if (std::isnan(v.front())) {  // a group not given
+        s.median[g] = s.worst[g] = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
       std::sort(v.begin(), v.end());
       const std::size_t n = v.size();
       s.median[g] = n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
@@ -74,35 +87,75 @@ std::vector<CategorySummary> summarize(const std::vector<CaseOutcome>& outcomes)
   return out;
 }
 
-bool print_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, const Policy& policy,
-                  const std::string& candidate) {
-  const std::vector<CategorySummary> summary = summarize(outcomes);
-  out << "hinge conform: " << candidate << " on " << outcomes.size() << " cases\n"
-      << "normwise errors in units of 2^-53 (median / worst); tolerance per case and output: " << fixed(policy.base, 0)
-      << " + " << fixed(policy.c, 0) << " kappa (docs/conformance.md)\n\n";
+std::array<double, 12> candidate_order(const std::array<double, 12>& x, const Stencil& stencil) {
+  std::array<double, 12> y{};
+  for (int j = 0; j < 4; ++j)
+    for (int c = 0; c < 3; ++c) y[3 * j + c] = x[3 * stencil[j] + c];
+  return y;
+}
+
+Report make_report(std::string candidate, std::vector<Expected> expected, std::vector<CandidateResult> results,
+                   const Grading& grading, const Stencil& stencil, std::string depth) {
+  if (expected.size() != results.size()) throw std::invalid_argument("make_report: one result per case");
+  Report r;
+  r.candidate = std::move(candidate);
+  r.grading = grading;
+  r.depth = std::move(depth);
+  r.stencil = stencil;
+  r.expected = std::move(expected);
+  r.results.reserve(results.size());
+  for (CandidateResult& c : results) r.results.push_back(rounded_to(grading.dtype, std::move(c)));
+  for (std::size_t i = 0; i < r.expected.size(); ++i)
+    r.outcomes.push_back(compare(r.expected[i], r.results[i], grading));
+  r.categories = summarize(r.outcomes);
+  r.diagnosis = diagnose(r.expected, r.results, r.outcomes, grading, stencil);
+  r.passed = !r.categories.empty();
+  r.tier = Tier::correctly_rounded;
+  for (const CategorySummary& s : r.categories) {
+    r.passed = r.passed && s.pass;
+    r.tier = std::max(r.tier, s.tier);
+  }
+  if (r.categories.empty()) r.tier = Tier::fail;
+  return r;
+}
+
+void print_report(std::ostream& out, const Report& report) {
+  const Policy& policy = report.grading.policy;
+  const Dtype dtype = report.grading.dtype;
+  std::size_t cases = report.outcomes.size();
+  out << "hinge conform: " << report.candidate << " on " << cases << " cases";
+  out << " (dtype " << dtype_name(dtype) << ", depth " << report.depth << ")";
+  out << "\nnormwise errors in units of " << unit_name(dtype)
+      << " (median / worst); tolerance per case and output: " << fixed(policy.base, 0) << " + " << fixed(policy.c, 0)
+      << " kappa (docs/conformance.md)\n";
+  std::string not_checked;
+  for (int g = 0; g < 3; ++g)
+    if (!report.grading.given[g]) not_checked += std::string(not_checked.empty() ? "" : ", ") + group_names[g];
+  if (!not_checked.empty()) out << "not checked (not given): " << not_checked << "\n";
+  out << '\n';
   char line[512];
   std::snprintf(line, sizeof line, "%-18s %5s %7s %9s  %-19s %-19s %-19s %-6s %-17s %s\n", "category", "cases",
                 "missing", "nonfinite", "theta", "grad", "hess", "result", "tier", "worst case (error / tolerance)");
   out << line;
-  bool all = true;
-  for (const CategorySummary& s : summary) {
-    auto pair = [](double a, double b) { return fixed(a) + " / " + fixed(b); };
+  for (const CategorySummary& s : report.categories) {
+    auto pair = [](double a, double b) {
+      return std::isnan(a) ? std::string("not checked") : fixed(a) + " / " + fixed(b);
+    };
     std::snprintf(line, sizeof line, "%-18s %5d %7d %9d  %-19s %-19s %-19s %-6s %-17s %s (%s)\n", s.category.c_str(),
                   s.cases, s.missing, s.nonfinite, pair(s.median[0], s.worst[0]).c_str(),
                   pair(s.median[1], s.worst[1]).c_str(), pair(s.median[2], s.worst[2]).c_str(),
                   s.pass ? "pass" : "FAIL", tier_name(s.tier), s.worst_id.c_str(), fixed(s.worst_ratio, 2).c_str());
     out << line;
-    all = all && s.pass;
   }
   out << '\n';
-  for (const CategorySummary& s : summary) {
+  for (const CategorySummary& s : report.categories) {
     if (s.pass) continue;
-    const auto it =
-        std::find_if(outcomes.begin(), outcomes.end(), [&](const CaseOutcome& o) { return o.id == s.worst_id; });
-    const CaseOutcome& o = *it;
+    const CaseOutcome& o = report.outcomes[s.worst_index];
     out << "FAIL " << s.category << ": " << s.failed << " of " << s.cases << " cases; worst case " << o.id << ": ";
     if (o.status != CandidateResult::Status::ok) {
-      out << status_name(o.status) << '\n';
+      out << status_name(o.status);
+      if (!report.results[s.worst_index].error.empty()) out << " (" << report.results[s.worst_index].error << ")";
+      out << '\n';
       continue;
     }
     out << group_names[o.group] << " error " << fixed(o.error[o.group]) << " > tolerance "
@@ -110,53 +163,90 @@ bool print_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, c
         << entry_name(o.group, o.entry) << ": expected " << exact(o.expected_value) << ", got "
         << exact(o.candidate_value) << '\n';
   }
-  out << "tiers (docs/conformance.md): correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), policy, fail: the\n"
-         "tier each category's every case reaches\n";
-  out << (all ? "PASS: every category is within the tolerance policy\n"
-              : "FAIL: the candidate is outside the tolerance policy (exit status 1)\n");
-  return all;
+  if (!report.diagnosis.empty()) {
+    out << "\ndiagnosis (docs/conformance.md, \"Diagnosis\"):\n";
+    for (const Finding& f : report.diagnosis) out << "- " << f.sentence << '\n';
+  }
+  out << "\ntiers, best first (docs/conformance.md): correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), "
+         "policy,\n"
+         "approximate (outside the policy, within "
+      << (dtype == Dtype::float32 ? "2^-8" : "2^-20")
+      << " (1 + kappa) relative: not accurate), fail; a category's tier is the one\nits every case reaches\n";
+  out << (report.passed ? "PASS: every category is within the tolerance policy\n"
+                        : "FAIL: the candidate is outside the tolerance policy (exit status 1)\n");
 }
 
-void write_json_report(std::ostream& out, const std::vector<CaseOutcome>& outcomes, const Policy& policy,
-                       const std::string& candidate) {
-  // Non-finite numbers (the error of a missing result) are written as null: JSON has no infinity.
+void write_json_report(std::ostream& out, const Report& report) {
+  // Non-finite numbers (the error of a missing result, a group not given) are written as null: JSON has
+  // no infinity.
   auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   auto groups = [&](const std::array<double, 3>& v) {
     return nlohmann::json{{"theta", number(v[0])}, {"grad", number(v[1])}, {"hess", number(v[2])}};
   };
-  const std::vector<CategorySummary> summary = summarize(outcomes);
-  nlohmann::json report;
-  report["candidate"] = candidate;
-  report["policy"] = {{"base", policy.base}, {"c", policy.c}};
-  report["units"] = "normwise error in units of 2^-53";
-  bool all = true;
-  report["categories"] = nlohmann::json::array();
-  for (const CategorySummary& s : summary) {
-    all = all && s.pass;
-    report["categories"].push_back({{"category", s.category},
-                                    {"cases", s.cases},
-                                    {"missing", s.missing},
-                                    {"nonfinite", s.nonfinite},
-                                    {"failed", s.failed},
-                                    {"median", groups(s.median)},
-                                    {"worst", groups(s.worst)},
-                                    {"worst_case", s.worst_id},
-                                    {"worst_ratio", number(s.worst_ratio)},
-                                    {"pass", s.pass},
-                                    {"tier", tier_name(s.tier)}});
+  const Policy& policy = report.grading.policy;
+  nlohmann::json j;
+  j["candidate"] = report.candidate;
+  j["policy"] = {{"base", policy.base}, {"c", policy.c}};
+  j["units"] = std::string("normwise error in units of ") + unit_name(report.grading.dtype);
+  j["dtype"] = dtype_name(report.grading.dtype);
+  j["depth"] = report.depth;
+  j["stencil"] = nlohmann::json::array();
+  for (const int v : report.stencil) j["stencil"].push_back(std::string{'x', static_cast<char>('0' + v)});
+  j["given"] = nlohmann::json::array();
+  for (int g = 0; g < 3; ++g)
+    if (report.grading.given[g]) j["given"].push_back(group_names[g]);
+  j["categories"] = nlohmann::json::array();
+  for (const CategorySummary& s : report.categories) {
+    const CaseOutcome& o = report.outcomes[s.worst_index];
+    const Expected& e = report.expected[s.worst_index];
+    nlohmann::json detail{{"id", o.id},
+                          {"x", e.input.x},
+                          {"x_candidate", candidate_order(e.input.x, report.stencil)},
+                          {"status", status_name(o.status)}};
+    if (o.status == CandidateResult::Status::ok) {
+      detail["output"] = group_names[o.group];
+      detail["entry"] = o.entry;
+      detail["expected"] = number(o.expected_value);
+      detail["got"] = number(o.candidate_value);
+    } else {
+      detail["output"] = nullptr;
+      detail["entry"] = nullptr;
+      detail["expected"] = nullptr;
+      detail["got"] = nullptr;
+      detail["error"] = report.results[s.worst_index].error;
+    }
+    j["categories"].push_back({{"category", s.category},
+                               {"cases", s.cases},
+                               {"missing", s.missing},
+                               {"nonfinite", s.nonfinite},
+                               {"failed", s.failed},
+                               {"median", groups(s.median)},
+                               {"worst", groups(s.worst)},
+                               {"worst_case", s.worst_id},
+                               {"worst_ratio", number(s.worst_ratio)},
+                               {"pass", s.pass},
+                               {"tier", tier_name(s.tier)},
+                               {"worst_case_detail", detail}});
   }
-  report["pass"] = all;
-  report["cases"] = nlohmann::json::array();
-  for (const CaseOutcome& o : outcomes)
-    report["cases"].push_back({{"id", o.id},
-                               {"category", o.category},
-                               {"status", status_name(o.status)},
-                               {"error", groups(o.error)},
-                               {"tolerance", groups(o.tolerance)},
-                               {"kappa", groups(o.kappa)},
-                               {"pass", o.pass},
-                               {"tier", tier_name(o.tier)}});
-  out << report.dump(1) << '\n';
+  j["pass"] = report.passed;
+  j["tier"] = tier_name(report.tier);
+  j["diagnosis"] = nlohmann::json::array();
+  for (const Finding& f : report.diagnosis) j["diagnosis"].push_back(f.sentence);
+  j["findings"] = nlohmann::json::array();
+  for (const Finding& f : report.diagnosis)
+    j["findings"].push_back(
+        {{"key", f.key}, {"explanation", f.explanation}, {"change", f.change}, {"categories", f.categories}});
+  j["cases"] = nlohmann::json::array();
+  for (const CaseOutcome& o : report.outcomes)
+    j["cases"].push_back({{"id", o.id},
+                          {"category", o.category},
+                          {"status", status_name(o.status)},
+                          {"error", groups(o.error)},
+                          {"tolerance", groups(o.tolerance)},
+                          {"kappa", groups(o.kappa)},
+                          {"pass", o.pass},
+                          {"tier", tier_name(o.tier)}});
+  out << j.dump(1) << '\n';
 }
 
 }  // namespace hinge::conformance

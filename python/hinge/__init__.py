@@ -8,10 +8,11 @@ docs/python.md has a worked example.
 """
 
 from . import _hinge
+from .conformance import conform
 
 Result = _hinge.Result
 
-__all__ = ["eval", "oracle", "hessian", "Result"]
+__all__ = ["eval", "oracle", "hessian", "conform", "Result"]
 
 
 def eval(x, method="fast", scalar="double", faithful=False):  # noqa: A001 (the contract's name)

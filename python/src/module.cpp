@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "bindings.hpp"
 #include "hinge/conformance/certified_line.hpp"
 #include "hinge/core/bending_problem.hpp"
 #include "hinge/core/errors.hpp"
@@ -362,4 +363,5 @@ PYBIND11_MODULE(_hinge, m) {
         "method"_a = "fast", "threads"_a = 0, "scalar"_a = "double", "allow_no_hinges"_a = false);
   m.def("stream", &stream, "command"_a, "input"_a, "first_line"_a = 1, "method"_a = "reference", "scalar"_a = "double",
         "report_precision"_a = false, "start_bits"_a = defaults.start_bits, "max_bits"_a = defaults.max_bits);
+  hinge::python::bind_conformance(m);
 }

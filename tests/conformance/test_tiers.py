@@ -14,7 +14,7 @@ from script_tests import run_all  # noqa: E402
 
 HINGE, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
-TIERS = ["correctly-rounded", "faithful", "4u", "policy", "fail"]
+TIERS = ["correctly-rounded", "faithful", "4u", "policy", "approximate", "fail"]
 
 
 def conform(*args):
@@ -94,7 +94,7 @@ def test_json_report_has_the_per_category_and_per_case_fields():
 
 def test_json_without_a_candidate_is_a_usage_error():
     p = subprocess.run([HINGE, "conform", "--inputs", "--json", os.path.join(WORK, "x.json")], capture_output=True)
-    assert p.returncode == 2 and b"--json goes with" in p.stderr
+    assert p.returncode == 2 and b"--json and --report go with" in p.stderr
 
 
 if __name__ == "__main__":

@@ -33,8 +33,16 @@ struct Expected {
 // of `c` (hinge/oracle/conditioning.hpp). Throws as certified_theta_derivatives does.
 Expected expected(const Case& c);
 
+// The floating-point format a candidate is graded in: its unit roundoff u is the unit of every error
+// (2^-53 for float64, 2^-24 for float32), and with float32 the candidate's outputs are rounded to float
+// before grading, against the exact values correctly rounded to float (docs/conformance.md, "float32").
+enum class Dtype { float64, float32 };
+double unit_roundoff(Dtype d);          // 2^-53, 2^-24
+const char* dtype_name(Dtype d);        // "float64", "float32"
+Dtype parse_dtype(const std::string&);  // std::invalid_argument naming the choices
+
 // The tolerance policy: output group f of a case passes when its normwise error, in units of
-// u = 2^-53 relative to ||f||_2 (to scale_f where f is exactly zero), is at most  base + c * kappa_f.
+// u (2^-53 in float64) relative to ||f||_2 (to scale_f where f is exactly zero), is at most  base + c * kappa_f.
 // The constants are calibrated in docs/conformance.md: the reference evaluated in double uses at most
 // 0.1 of the tolerance in any category, and an error of 64 ulps in every Hessian entry exceeds it on
 // every well-shaped case.
@@ -48,17 +56,32 @@ struct Policy {
 using CandidateResult = io::EvalOutput;
 
 // The accuracy a candidate reaches, best first (docs/conformance.md, "Tiers"): every output equal to
-// the certified one; every output group within 1 unit of 2^-53 (normwise, as the errors are measured);
-// within 4 units; within the tolerance policy; outside it.
-enum class Tier { correctly_rounded, faithful, four_units, policy, fail };
-// "correctly-rounded", "faithful", "4u", "policy", "fail" (docs/contract.md).
+// the certified one; every output group within 1 unit of u (normwise, as the errors are measured);
+// within 4 units; within the tolerance policy; outside it but within `approximate_bound` (the formula
+// looks right and is not accurate); outside that. `approximate` and `fail` are not passed.
+enum class Tier { correctly_rounded, faithful, four_units, policy, approximate, fail };
+// "correctly-rounded", "faithful", "4u", "policy", "approximate", "fail" (docs/contract.md).
 const char* tier_name(Tier t);
+Tier parse_tier(const std::string& name);  // std::invalid_argument naming the choices
+
+// The bound of the tier `approximate`, in units of u, per unit of (1 + kappa_f): a relative error of
+// 2^-20 in float64, 2^-8 in float32 (docs/conformance.md).
+double approximate_bound(Dtype d);
+
+// How a candidate is graded: the policy, the format, and which output groups it gave (theta, grad,
+// hess: a group not given is not graded, and its errors are NaN).
+struct Grading {
+  Policy policy;
+  Dtype dtype = Dtype::float64;
+  std::array<bool, 3> given{true, true, true};
+};
 
 struct CaseOutcome {
   std::string id, category;
   Tier tier = Tier::fail;
   CandidateResult::Status status = CandidateResult::Status::missing;
-  std::array<double, 3> error{};      // normwise, units of 2^-53 (infinite when missing or non-finite)
+  std::array<double, 3> error{};      // normwise, units of u (infinite when missing or non-finite, NaN when
+                                      // the group was not given)
   std::array<double, 3> tolerance{};  // base + c kappa_f
   std::array<double, 3> kappa{};
   bool pass = false;
@@ -68,12 +91,18 @@ struct CaseOutcome {
   double expected_value = 0, candidate_value = 0;
 };
 
-CaseOutcome compare(const Expected& e, const CandidateResult& r, const Policy& policy);
+// `r` graded against `e`. With Dtype::float32, `r`'s values are first rounded to float (an infinity when
+// they overflow it); `e` holds the expected values of that format.
+CaseOutcome compare(const Expected& e, const CandidateResult& r, const Grading& grading);
+
+// `r` rounded to the format (float32: each value to the nearest float, kept as a double; float64: as is).
+CandidateResult rounded_to(Dtype d, CandidateResult r);
 
 // The normwise error of one output group (n <= 144 values), ||candidate - certified||_2 / ||certified||_2
-// in units of 2^-53, relative to `scale_if_zero` where the certified group is exactly zero (conformance
+// in units of u (default 2^-53), relative to `scale_if_zero` where the certified group is exactly zero (conformance
 // uses scale_f); 0 when the two are equal, infinity when the difference is not finite.
-double normwise_error(const double* candidate, const double* certified, std::size_t n, double scale_if_zero);
+double normwise_error(const double* candidate, const double* certified, std::size_t n, double scale_if_zero,
+                      double u = 0x1p-53);
 
 // Mesh Hessians: normwise error of a candidate's energy Hessian (and gradient) against the certified
 // ones, in units of 2^-53, and the summation condition number kappa_sum = sum_h ||H_h||_F / ||H||_F

@@ -1,0 +1,256 @@
+"""Conformance from Python: check a bending kernel in its own conventions (docs/python-conformance.md).
+
+``conform(fn)`` calls ``fn`` on the conformance set, in the kernel's own vertex order and floating-point
+type, maps its gradient and Hessian back to the contract's order, and grades them against certified
+values with the tolerance policy of ``hinge conform`` (the same grading, tiers, diagnosis and reports:
+this module only calls the candidate and converts its arrays).
+"""
+
+import time
+
+import numpy as np
+
+from . import _hinge
+
+__all__ = ["conform", "Report", "OUTPUTS", "LABELS"]
+
+OUTPUTS = ("theta", "grad", "hess")
+LABELS = ("x0", "x1", "x2", "x3")
+_SHAPES = {"theta": ((), "(n,)"), "grad": ((12,), "(n, 12)"), "hess": ((144,), "(n, 12, 12) or (n, 144)")}
+_MISSING, _ERROR, _NONFINITE, _OK = 0, 1, 2, 3  # io::EvalOutput::Status
+
+
+class Report:
+    """The graded run: ``passed``, ``tier``, ``categories``, ``diagnosis``, ``to_json()``, ``to_html(path)``,
+    ``str(report)`` (the text report of ``hinge conform``), and the time taken: ``candidate_seconds``
+    (inside ``fn``) and ``kit_seconds`` (the rest)."""
+
+    def __init__(self, compiled, candidate_seconds, kit_seconds):
+        import json
+
+        self._compiled = compiled
+        self._json = compiled.json()
+        parsed = json.loads(self._json)
+        self.passed = bool(compiled.passed)
+        self.tier = compiled.tier
+        self.diagnosis = list(compiled.diagnosis)
+        self.categories = {}
+        for c in parsed["categories"]:
+            entry = {"cases": c["cases"], "missing": c["missing"], "nonfinite": c["nonfinite"], "tier": c["tier"]}
+            for group in OUTPUTS:
+                entry[group] = {"median": c["median"][group], "max": c["worst"][group]}
+            entry["worst_case"] = c["worst_case_detail"]
+            self.categories[c["category"]] = entry
+        self.candidate_seconds = candidate_seconds
+        self.kit_seconds = kit_seconds
+
+    def to_json(self):
+        """The JSON report: exactly what ``hinge conform --json`` writes."""
+        return self._json
+
+    def to_html(self, path):
+        """Writes the report as one self-contained HTML page to ``path``."""
+        self._compiled.write_html(str(path))
+
+    def __str__(self):
+        return self._compiled.text()
+
+    def __repr__(self):
+        return f"<hinge conformance report: {self.tier}, {'passed' if self.passed else 'not passed'}>"
+
+
+def _stencil_indices(stencil):
+    if isinstance(stencil, str) or not hasattr(stencil, "__iter__"):
+        raise ValueError(f"stencil= must be a sequence of the four labels x0, x1, x2, x3; got {stencil!r}")
+    labels = list(stencil)
+    for label in labels:
+        if label not in LABELS:
+            raise ValueError(f"stencil=: unknown label {label!r} (expected 'x0', 'x1', 'x2' or 'x3')")
+    if len(labels) != 4 or len(set(labels)) != 4:
+        raise ValueError(f"stencil= must be a permutation of ('x0', 'x1', 'x2', 'x3'); got {tuple(labels)!r}")
+    return [LABELS.index(label) for label in labels]
+
+
+def _outputs(outputs):
+    if isinstance(outputs, str):
+        outputs = (outputs,)
+    try:
+        names = tuple(outputs)
+    except TypeError:
+        raise ValueError(f"outputs= must be a sequence of output names; got {outputs!r}") from None
+    for name in names:
+        if name not in OUTPUTS:
+            raise ValueError(f"outputs=: unknown output {name!r} (expected 'theta', 'grad' or 'hess')")
+    if len(set(names)) != len(names) or set(names) not in ({"theta"}, {"theta", "grad"}, set(OUTPUTS)):
+        raise ValueError(
+            f"outputs= must be ('theta', 'grad', 'hess'), ('theta', 'grad') or ('theta',) (in any order); got {names!r}"
+        )
+    return names
+
+
+def _dtype(dtype):
+    try:
+        name = np.dtype(dtype).name
+    except TypeError:
+        name = None
+    if name not in ("float64", "float32"):
+        raise ValueError(f"dtype= must be 'float64' or 'float32'; got {dtype!r}")
+    return name
+
+
+def _choice(value, name, choices):
+    if value not in choices:
+        raise ValueError(f"{name}= must be one of {', '.join(repr(c) for c in choices)}; got {value!r}")
+    return value
+
+
+def _as_output(value, name, rows, batched):
+    """The candidate's output `name` as a float64 array (rows, size); ValueError for a wrong shape or type."""
+    try:
+        a = np.asarray(value)
+    except Exception as e:  # noqa: BLE001 (any conversion failure is the candidate's wrong output)
+        raise ValueError(f"fn returned {name} that NumPy cannot convert: {e}") from None
+    if a.dtype.kind not in "fiu":
+        raise ValueError(f"fn returned {name} of dtype {a.dtype}; expected a real array of shape {_SHAPES[name][1]}")
+    tail, shown = _SHAPES[name]
+    original = tuple(a.shape)
+    if not batched:  # one hinge: theta a scalar (or (1,)), grad (12,), hess (12, 12) or (144,)
+        a = a if (name == "theta" and original == (1,)) else a.reshape((1,) + original)
+        shown = {"theta": "() or (1,)", "grad": "(12,)", "hess": "(12, 12) or (144,)"}[name]
+    size = int(np.prod(tail))
+    ok = a.ndim >= 1 and a.shape[0] == rows and (a.shape[1:] == tail or (name == "hess" and a.shape[1:] == (12, 12)))
+    if not ok:
+        where = f" for one hinge" if not batched else f" for n = {rows} hinges"
+        raise ValueError(f"fn returned {name} of shape {original}{where}; expected {shown}")
+    return np.asarray(a, dtype=np.float64).reshape(rows, size)
+
+
+def _unpack(result, names, rows, batched):
+    if isinstance(result, dict):
+        missing = [n for n in names if n not in result]
+        if missing:
+            raise ValueError(f"fn returned a dict without {', '.join(missing)} (outputs={names!r})")
+        values = [result[n] for n in names]
+    elif isinstance(result, (tuple, list)) and len(names) > 1:
+        if len(result) != len(names):
+            raise ValueError(f"fn returned {len(result)} values; expected {len(names)}, in the order of outputs={names!r}")
+        values = list(result)
+    elif len(names) == 1 and not isinstance(result, (tuple, list)):
+        values = [result]
+    elif len(names) == 1 and len(result) == 1 and isinstance(result, tuple):
+        values = list(result)
+    else:
+        raise ValueError(f"fn must return a dict keyed by {names!r} or a tuple in that order; got {type(result).__name__}")
+    return {n: _as_output(v, n, rows, batched) for n, v in zip(names, values)}
+
+
+def _describe(e):
+    text = str(e)
+    return f"fn raised {type(e).__name__}" + (f": {text}" if text else "")
+
+
+def conform(
+    fn,
+    *,
+    outputs=OUTPUTS,
+    stencil=LABELS,
+    dtype="float64",
+    batch=True,
+    depth="quick",
+):
+    """Grade a bending kernel against certified values, in its own conventions.
+
+    fn(X): X a fresh C-contiguous (n, 12) array of dtype `dtype`, each row a hinge, its four vertices in
+    the order `stencil` gives in the contract's labels (("x0", "x3", "x1", "x2") for a kernel whose hinge is
+    opposite vertex, other opposite vertex, edge start, edge end). With batch=False, one hinge at a time,
+    shape (12,). It returns a dict keyed by the names in `outputs`, or a tuple in that order: theta (n,),
+    grad (n, 12), hess (n, 12, 12) or (n, 144), in its own variable order (vertex-major, its stencil), as
+    any array numpy.asarray accepts. `outputs` may leave out "hess", or "grad" and "hess".
+
+    dtype: "float64" (errors in units of 2^-53) or "float32" (the float32 set, outputs rounded to float,
+    units of 2^-24). depth: "quick" (the nine categories) or "deep" (and at least 1000 hard hinges).
+
+    A hinge whose outputs hold a NaN, or on which fn raises an Exception, is not evaluated (counted in
+    `missing`); a batch that raises is retried hinge by hinge, shape (1, 12), to name the culprit.
+    Returns a Report. Raises ValueError for a bad argument or an output of the wrong shape or dtype.
+    """
+    start = time.perf_counter()
+    if not callable(fn):
+        raise ValueError(f"fn must be callable; got {type(fn).__name__}")
+    names = _outputs(outputs)
+    order = _stencil_indices(stencil)
+    dtype_name = _dtype(dtype)
+    _choice(depth, "depth", ("quick", "deep"))
+    if not isinstance(batch, (bool, np.bool_)):
+        raise ValueError(f"batch= must be True or False; got {batch!r}")
+    ids, _, x = _hinge.conformance_set(dtype_name, depth)
+    n = len(ids)
+    # The candidate's column i is the contract's column columns[i] (its vertex j is x_{order[j]}).
+    columns = np.array([3 * order[j] + c for j in range(4) for c in range(3)])
+    x_candidate = np.ascontiguousarray(x[:, columns], dtype=dtype_name)
+
+    given = {name: name in names for name in OUTPUTS}
+    got = {"theta": np.zeros((n, 1)), "grad": np.zeros((n, 12)), "hess": np.zeros((n, 144))}
+    status = np.full(n, _OK, dtype=np.int64)
+    errors = [""] * n
+    candidate_seconds = 0.0
+
+    def call(rows_x):
+        nonlocal candidate_seconds
+        t = time.perf_counter()
+        try:
+            return fn(rows_x)
+        finally:
+            candidate_seconds += time.perf_counter() - t
+
+    def store(rows, values):
+        for name, v in values.items():
+            got[name][rows] = v
+
+    def one_by_one(shape_one):
+        for i in range(n):
+            try:
+                result = call(x_candidate[i].reshape(shape_one).copy())
+            except Exception as e:  # noqa: BLE001 (a raising candidate is graded, not propagated)
+                status[i], errors[i] = _MISSING, _describe(e)
+                continue
+            store([i], _unpack(result, names, 1, len(shape_one) == 2))
+
+    if batch:
+        try:
+            result = call(x_candidate.copy())
+        except Exception:  # noqa: BLE001 (retried hinge by hinge to name the hinges that raise)
+            one_by_one((1, 12))
+        else:
+            store(slice(None), _unpack(result, names, n, True))
+    else:
+        one_by_one((12,))
+
+    # Back to the contract's order: the candidate's variable i is the contract's columns[i].
+    theta = got["theta"][:, 0].copy()
+    grad = np.zeros((n, 12))
+    grad[:, columns] = got["grad"]
+    hess = np.zeros((n, 12, 12))
+    hess[:, columns[:, None], columns[None, :]] = got["hess"].reshape(n, 12, 12)
+    given_values = np.concatenate([got[name] for name in names], axis=1)
+    for i in np.flatnonzero(status == _OK):
+        row = given_values[i]
+        if np.isnan(row).any():
+            status[i], errors[i] = _MISSING, "a NaN in the outputs"
+        elif not np.isfinite(row).all():
+            status[i], errors[i] = _NONFINITE, "an infinity in the outputs"
+    name = getattr(fn, "__qualname__", None) or type(fn).__name__
+    compiled = _hinge.conformance_grade(
+        f"Python function {name}",
+        dtype_name,
+        depth,
+        [given[g] for g in OUTPUTS],
+        order,
+        theta,
+        grad,
+        hess.reshape(n, 144),
+        status.tolist(),
+        errors,
+    )
+    total = time.perf_counter() - start
+    return Report(compiled, candidate_seconds, total - candidate_seconds)

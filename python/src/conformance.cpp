@@ -1,0 +1,125 @@
+// hinge._hinge's conformance part: the committed conformance sets and the report of a graded run, for
+// hinge.conform (python/hinge/conformance.py), which calls the candidate, maps its stencil and hands the
+// outputs, in the contract's order, to hinge::conformance::make_report: the grading, tiers and diagnosis
+// are those of `hinge conform`, and the text, JSON and HTML reports the same functions write.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "bindings.hpp"
+#include "hinge/conformance/html_report.hpp"
+#include "hinge/conformance/report.hpp"
+#include "hinge/conformance/sets.hpp"
+#include "hinge/io/atomic_file.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace hinge::python {
+namespace {
+
+namespace conf = hinge::conformance;
+
+// std::invalid_argument (an unknown dtype or depth) as ValueError.
+template <class F>
+auto parsed(F&& f) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(e.what());
+  }
+}
+
+// (ids, categories, x (n, 12) float64: the contract's order, exactly the set's numbers).
+py::tuple conformance_set(const std::string& dtype, const std::string& depth) {
+  const auto& set = parsed([&]() -> const auto& {
+    return conf::conformance_set(conf::parse_dtype(dtype), conf::parse_depth(depth));
+  });
+  py::list ids, categories;
+  const auto n = static_cast<py::ssize_t>(set.size());
+  py::array_t<double> x({n, py::ssize_t{12}});
+  double* out = x.mutable_data();
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    ids.append(set[i].input.id);
+    categories.append(set[i].input.category);
+    std::copy(set[i].input.x.begin(), set[i].input.x.end(), out + 12 * i);
+  }
+  return py::make_tuple(ids, categories, x);
+}
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// Grades the candidate's outputs (the contract's order, float64; status per case 0 missing, 1 error, 2
+// non-finite, 3 ok as io::EvalOutput::Status; `errors` the reason per case, "" if none).
+conf::Report grade(const std::string& candidate, const std::string& dtype, const std::string& depth,
+                   const std::array<bool, 3>& given, const conf::Stencil& stencil, const Array& theta,
+                   const Array& grad, const Array& hess, const std::vector<int>& status,
+                   const std::vector<std::string>& errors) {
+  conf::Grading grading;
+  grading.dtype = parsed([&] { return conf::parse_dtype(dtype); });
+  grading.given = given;
+  const conf::Depth d = parsed([&] { return conf::parse_depth(depth); });
+  std::vector<conf::Expected> expected = conf::conformance_set(grading.dtype, d);
+  const std::size_t n = expected.size();
+  if (static_cast<std::size_t>(theta.size()) != n || static_cast<std::size_t>(grad.size()) != 12 * n ||
+      static_cast<std::size_t>(hess.size()) != 144 * n || status.size() != n || errors.size() != n)
+    throw py::value_error("grade: one row per case of the set");
+  std::vector<conf::CandidateResult> results(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    conf::CandidateResult& r = results[i];
+    if (status[i] < 0 || status[i] > 3) throw py::value_error("grade: status must be 0..3");
+    r.status = static_cast<conf::CandidateResult::Status>(status[i]);
+    r.error = errors[i];
+    r.theta = theta.data()[i];
+    std::copy_n(grad.data() + 12 * i, 12, r.grad.begin());
+    std::copy_n(hess.data() + 144 * i, 144, r.hess.begin());
+  }
+  py::gil_scoped_release release;
+  return conf::make_report(candidate, std::move(expected), std::move(results), grading, stencil, depth);
+}
+
+}  // namespace
+
+void bind_conformance(py::module_& m) {
+  py::class_<conf::Report>(m, "ConformanceReport", "A graded conformance run (hinge.conform builds it)")
+      .def_readonly("passed", &conf::Report::passed)
+      .def_property_readonly("tier", [](const conf::Report& r) { return std::string(conf::tier_name(r.tier)); })
+      .def_property_readonly("diagnosis",
+                             [](const conf::Report& r) {
+                               std::vector<std::string> out;
+                               for (const auto& f : r.diagnosis) out.push_back(f.sentence);
+                               return out;
+                             })
+      .def("text",
+           [](const conf::Report& r) {
+             std::ostringstream out;
+             conf::print_report(out, r);
+             return out.str();
+           })
+      .def("json",
+           [](const conf::Report& r) {
+             std::ostringstream out;
+             conf::write_json_report(out, r);
+             return out.str();
+           })
+      .def(
+          "write_html",
+          [](const conf::Report& r, const std::string& path) {
+            try {
+              hinge::io::AtomicFile f(path);
+              conf::write_html_report(f.stream(), r);
+              f.commit();
+            } catch (const std::runtime_error& e) {
+              PyErr_SetString(PyExc_OSError, e.what());
+              throw py::error_already_set();
+            }
+          },
+          "path"_a);
+  m.def("conformance_set", &conformance_set, "dtype"_a, "depth"_a);
+  m.def("conformance_grade", &grade, "candidate"_a, "dtype"_a, "depth"_a, "given"_a, "stencil"_a, "theta"_a, "grad"_a,
+        "hess"_a, "status"_a, "errors"_a);
+}
+
+}  // namespace hinge::python
