@@ -4,7 +4,19 @@
 
 #include <pybind11/pybind11.h>
 
+#include <stdexcept>
+
 namespace hinge::python {
+
+// f(), with std::invalid_argument (an unknown method, scalar, energy, dtype or depth) as ValueError.
+template <class F>
+decltype(auto) parsed(F&& f) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    throw pybind11::value_error(e.what());
+  }
+}
 
 // The conformance kit's compiled part (conformance.cpp): the committed sets and the graded report.
 void bind_conformance(pybind11::module_& m);

@@ -22,16 +22,6 @@ namespace {
 
 namespace conf = hinge::conformance;
 
-// std::invalid_argument (an unknown dtype or depth) as ValueError.
-template <class F>
-auto parsed(F&& f) {
-  try {
-    return f();
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(e.what());
-  }
-}
-
 // (ids, categories, x (n, 12) float64: the contract's order, exactly the set's numbers).
 py::tuple conformance_set(const std::string& dtype, const std::string& depth) {
   const auto& set = parsed([&]() -> const auto& {

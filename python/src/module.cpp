@@ -30,6 +30,7 @@ using namespace pybind11::literals;
 
 namespace {
 
+using hinge::python::parsed;
 using Hinges = py::array_t<double, py::array::c_style>;
 
 // theta (n,), grad (n, 12), hess (n, 12, 12), error (n: None or why), for eval and oracle.
@@ -97,16 +98,6 @@ void store(const Rounded& v, double* theta, double* grad, double* hess) {
   *theta = v.theta;
   std::copy(v.grad.begin(), v.grad.end(), grad);
   std::copy(v.hess.begin(), v.hess.end(), hess);
-}
-
-// std::invalid_argument (an unknown method, scalar or energy) as ValueError.
-template <class F>
-auto parsed(F&& f) {
-  try {
-    return f();
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(e.what());
-  }
 }
 
 // Arguments of the wrong Python type are ValueErrors naming the argument (contract, "Python"), not
