@@ -85,7 +85,8 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
   check_same_mesh(deformed, topology, "deformed");
   check_same_mesh(rest, topology, "rest");
   if (options.fast_path)
-    if (std::optional<CertifiedMesh> fast = detail::fast_mesh(deformed, rest, topology, parameters, request))
+    if (std::optional<CertifiedMesh> fast =
+            detail::fast_mesh(deformed, rest, topology, parameters, request, options.gauss_newton))
       return *fast;
   const bool want_grad = request & want_gradient, want_hess = request & want_hessian;
   const Model model = parameters.model;
@@ -154,14 +155,15 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
             }
         if (!want_hess) return;
         const Interval h_scale = Interval(e.h_den) * l0;
-        std::array<Interval, 144> H;  // eq. (3): psi' H + psi'' g g^T, once per entry
+        std::array<Interval, 144> H;  // eq. (3): psi' H + psi'' g g^T (Gauss-Newton: the second term), once per entry
         double squares = 0;
         for (int row = 0; row < 12; ++row)
           for (int col = 0; col < 12; ++col) {
             const Int& num = e.h[12 * row + col];
             Interval& v = H[12 * row + col];
             v = Interval::zero();
-            if (sgn(num) != 0 && !p.d1.is_exact_zero()) v = p.d1 * scale2(Interval(num) / h_scale, 2 * e.F);
+            if (!options.gauss_newton && sgn(num) != 0 && !p.d1.is_exact_zero())
+              v = p.d1 * scale2(Interval(num) / h_scale, 2 * e.F);
             if (!g[row].is_exact_zero() && !g[col].is_exact_zero() && !p.d2.is_exact_zero())
               v += p.d2 * g[row] * g[col];
             squares += square(midpoint(v));

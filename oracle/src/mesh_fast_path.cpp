@@ -58,7 +58,7 @@ std::optional<bool> equal_angles(Model model, const BoundedHinge& h, const Bound
 }  // namespace
 
 std::optional<CertifiedMesh> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
-                                       const EnergyParameters& parameters, unsigned request) {
+                                       const EnergyParameters& parameters, unsigned request, bool gauss_newton) {
   const Model model = parameters.model;
   if (model != Model::shells && model != Model::tan && model != Model::viscoelastic) return std::nullopt;
   const bool want_grad = request & want_gradient, want_hess = request & want_hessian;
@@ -92,12 +92,14 @@ std::optional<CertifiedMesh> fast_mesh(const Mesh& deformed, const Mesh& rest, c
         }
     }
     if (!want_hess) continue;
-    std::array<Bounded, 144> H;  // eq. (3): psi' Hess theta + psi'' grad theta grad theta^T, once per entry
+    std::array<Bounded, 144> H;  // eq. (3): psi' Hess theta + psi'' grad theta grad theta^T (Gauss-Newton: the
+                                 // second term), once per entry
     double squares = 0;
     for (int row = 0; row < 12; ++row)
       for (int col = 0; col < 12; ++col) {
         Bounded& v = H[12 * row + col];
-        v = p.d1 * h->hess[12 * row + col] + p.d2 * h->grad[row] * h->grad[col];
+        v = p.d2 * h->grad[row] * h->grad[col];
+        if (!gauss_newton) v = p.d1 * h->hess[12 * row + col] + v;
         squares += v.hi * v.hi;  // the value rounded to double, as mesh.cpp's midpoints
       }
     out.hessian_contributions += std::sqrt(squares);

@@ -14,6 +14,6 @@
 namespace hinge::oracle::detail {
 
 std::optional<CertifiedMesh> fast_mesh(const Mesh& deformed, const Mesh& rest, const Topology& topology,
-                                       const EnergyParameters& parameters, unsigned request);
+                                       const EnergyParameters& parameters, unsigned request, bool gauss_newton = false);
 
 }  // namespace hinge::oracle::detail

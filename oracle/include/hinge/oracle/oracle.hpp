@@ -43,6 +43,9 @@ struct Options {
   // magnitude, or one that rounds above FLT_MAX, is a hinge::DomainError "<what> is outside the normal range
   // of float"; the branch cut is +pi rounded to float. fast_path is then ignored.
   bool binary32 = false;
+  // certified_mesh only (mesh.hpp): the Hessian's Gauss-Newton part, sum over hinges of
+  // psi'' grad theta grad theta^T (not clamped: psi'' may be negative), without psi' Hess theta.
+  bool gauss_newton = false;
 };
 
 // Which stages a hinge's certification needed.
