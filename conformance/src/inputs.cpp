@@ -1,6 +1,8 @@
 // The conformance inputs (hinge/conformance/inputs.hpp), built deterministically: a fixed-seed SplitMix64
 // generator, IEEE-754 basic operations only (the project compiles with -ffp-contract=off, so that no
-// platform fuses a multiply and an add), and sines and cosines from MPFR, correctly rounded. The same
+// platform fuses a multiply and an add), and sines and cosines from MPFR, correctly rounded. Every random
+// draw is a statement of its own or the only draw of its expression: C++ leaves the order in which a call's
+// arguments are evaluated unspecified (compilers differ), and the committed vectors fix one order. The same
 // doubles therefore come out everywhere, and conformance/ can be regenerated bit for bit.
 //
 // Each hinge is built in a local frame, then rotated and translated:
@@ -12,16 +14,21 @@
 //            x3 = (u3, -h3 cos(psi), h3 sin(psi))  lower triangle rotated by psi about the hinge edge
 //
 // psi = 0 is flat (theta = 0), psi -> +-pi folds x3 onto the upper triangle's side; |theta| = |psi|.
+//
+// Each category and each hard family is written once, for both number formats (Format): the double sets
+// and the float32 ones, whose hinges are built the same way within float32's range and rounded to float.
 #include <mpfr.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "hinge/conformance/inputs.hpp"
 #include "hinge/core/errors.hpp"
@@ -105,6 +112,30 @@ Rotation random_rotation(Random& r) {  // from a random unit quaternion
           2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
 }
 
+// A random rotation of the axes (one of the 24 signed permutations with determinant +1): exact.
+Rotation random_axes(Random& r) {
+  static constexpr int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  const int k = r.integer(0, 5);
+  const double s0 = r.sign(), s1 = r.sign();
+  const double s2 = s0 * s1 * (k < 3 ? 1 : -1);  // odd permutations need an odd number of sign flips
+  const double signs[3] = {s0, s1, s2};
+  Rotation R{};
+  for (int row = 0; row < 3; ++row) R[3 * row + orders[k][row]] = signs[row];
+  return R;
+}
+
+// Exact rotations: signed permutations of the axes with determinant +1.
+const std::array<std::pair<const char*, Rotation>, 8> exact_rotations{{
+    {"identity", identity},
+    {"x90", {1, 0, 0, 0, 0, -1, 0, 1, 0}},
+    {"y90", {0, 0, 1, 0, 1, 0, -1, 0, 0}},
+    {"z90", {0, -1, 0, 1, 0, 0, 0, 0, 1}},
+    {"x180", {1, 0, 0, 0, -1, 0, 0, 0, -1}},
+    {"cycle", {0, 0, 1, 1, 0, 0, 0, 1, 0}},
+    {"cycle2", {0, 1, 0, 0, 0, 1, 1, 0, 0}},
+    {"z270", {0, 1, 0, -1, 0, 0, 0, 0, 1}},
+}};
+
 // x = scale * (R (p - center)) + offset, per vertex.
 X12 place(const std::array<P3, 4>& p, const P3& center, const Rotation& R, double scale, const P3& offset) {
   X12 x{};
@@ -121,6 +152,52 @@ X12 place(const std::array<P3, 4>& p, const P3& center, const Rotation& R, doubl
 P3 random_point(Random& r, double half_width) {
   return {r.uniform(-half_width, half_width), r.uniform(-half_width, half_width), r.uniform(-half_width, half_width)};
 }
+
+// A random unit vector (a random point of the unit ball's shell 1/4 <= |d| <= 1, normalized).
+P3 random_direction(Random& r) {
+  P3 d;
+  double n2;
+  do {
+    d = random_point(r, 1);
+    n2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  } while (n2 > 1 || n2 < 0.0625);
+  const double n = std::sqrt(n2);
+  return P3{d[0] / n, d[1] / n, d[2] / n};
+}
+
+// l about its hinge edge's midpoint, times `scale`, under a random rotation and a random offset in [-1, 1]^3
+// (drawn first).
+X12 random_placement(Random& r, const Local& l, double scale = 1) {
+  const P3 offset = random_point(r, 1);
+  return place(l.points(), {0.5 * l.L0, 0, 0}, random_rotation(r), scale, offset);
+}
+
+X12 times(X12 x, double factor) {
+  for (double& v : x) v *= factor;
+  return x;
+}
+
+X12 scaled_by_power_of_two(X12 x, int k) {
+  for (double& v : x) v = std::ldexp(v, k);  // exact within the range (float coordinates stay floats)
+  return x;
+}
+
+// Exactly coplanar hinges off the coordinate planes: integer points a u + b v in the lattice plane
+// spanned by u = (1, 2, 2), v = (2, 1, -2) (u . v = 0, |u| = |v| = 3). `folded` puts x3 on x0's side.
+X12 lattice_hinge(bool folded) {
+  const std::array<int, 3> u{1, 2, 2}, v{2, 1, -2};
+  auto point = [&](int a, int c) {
+    return P3{static_cast<double>(a * u[0] + c * v[0]), static_cast<double>(a * u[1] + c * v[1]),
+              static_cast<double>(a * u[2] + c * v[2])};
+  };
+  const std::array<P3, 4> p{point(1, 3), point(0, 0), point(3, 0), folded ? point(2, 1) : point(2, -2)};
+  X12 x{};
+  for (int k = 0; k < 4; ++k)
+    for (int c = 0; c < 3; ++c) x[3 * k + c] = p[k][c];
+  return x;
+}
+
+// --- the rules of the sets ----------------------------------------------------------------------------
 
 // Whether the exact hinge is valid and well-shaped with a margin (docs/contract.md: smallest altitude
 // >= 0.15 longest edge in each triangle, 0.05 <= |theta| <= pi - 0.05; here 0.16 and 0.06, so that
@@ -161,278 +238,8 @@ bool valid(const X12& x) {
   }
 }
 
-std::string two_digits(int i) { return (i < 10 ? "0" : "") + std::to_string(i); }
-
-class Builder {
- public:
-  explicit Builder(std::vector<Case>& out) : out_(out) {}
-  void start(const std::string& category) {
-    category_ = category;
-    index_ = 0;
-  }
-  void add(const std::string& tag, const X12& x) {
-    if (!valid(x)) throw std::logic_error("conformance input " + category_ + "/" + tag + " is not valid");
-    out_.push_back({category_ + "/" + two_digits(index_++) + "-" + tag, category_, x});
-  }
-
- private:
-  std::vector<Case>& out_;
-  std::string category_;
-  int index_ = 0;
-};
-
-// A random well-shaped local hinge.
-Local random_well_shaped(Random& r) {
-  Local l;
-  l.u0 = r.uniform(0.25, 0.75), l.h0 = r.uniform(0.6, 1.3);
-  l.u3 = r.uniform(0.25, 0.75), l.h3 = r.uniform(0.6, 1.3);
-  l.set_psi(r.sign() * r.uniform(0.1, pi - 0.1));
-  return l;
-}
-
-X12 random_placement(Random& r, const Local& l, double scale = 1) {
-  return place(l.points(), {0.5 * l.L0, 0, 0}, random_rotation(r), scale, random_point(r, 1));
-}
-
-void well_shaped(Builder& b) {
-  Random r(0x5eed0001);
-  b.start("well-shaped");
-  for (int i = 0; i < 40;) {
-    const X12 x = random_placement(r, random_well_shaped(r), r.uniform(0.5, 2));
-    if (!well_shaped_exactly(x)) continue;
-    b.add("random", x);
-    ++i;
-  }
-}
-
-// Exact rotations: signed permutations of the axes with determinant +1.
-const std::array<std::pair<const char*, Rotation>, 8> exact_rotations{{
-    {"identity", identity},
-    {"x90", {1, 0, 0, 0, 0, -1, 0, 1, 0}},
-    {"y90", {0, 0, 1, 0, 1, 0, -1, 0, 0}},
-    {"z90", {0, -1, 0, 1, 0, 0, 0, 0, 1}},
-    {"x180", {1, 0, 0, 0, -1, 0, 0, 0, -1}},
-    {"cycle", {0, 0, 1, 1, 0, 0, 0, 1, 0}},
-    {"cycle2", {0, 1, 0, 0, 0, 1, 1, 0, 0}},
-    {"z270", {0, 1, 0, -1, 0, 0, 0, 0, 1}},
-}};
-
-void rotations(Builder& b) {
-  Random r(0x5eed0002);
-  b.start("rotations");
-  Local l;
-  l.u0 = 0.375, l.h0 = 0.875, l.u3 = 0.625, l.h3 = 0.75;
-  l.set_psi(1.125);
-  const P3 center{0.5, 0.25, 0};
-  for (const auto& [name, R] : exact_rotations) b.add(name, place(l.points(), center, R, 1, {0, 0, 0}));
-  for (int i = 0; i < 22; ++i) b.add("random", place(l.points(), center, random_rotation(r), 1, {0, 0, 0}));
-}
-
-void scales(Builder& b) {
-  Random r(0x5eed0003);
-  b.start("scales");
-  Local l;
-  l.u0 = 0.4375, l.h0 = 0.8125, l.u3 = 0.5625, l.h3 = 0.9375;
-  l.set_psi(-0.875);
-  const Rotation R = random_rotation(r);
-  const P3 offset = random_point(r, 0.5);
-  const X12 base = place(l.points(), {0.5, 0, 0}, R, 1, offset);
-  for (int k : {-500, -400, -300, -200, -100, -50, -10, 0, 10, 50, 100, 200, 300, 400, 500}) {
-    X12 x = base;
-    for (double& v : x) v = std::ldexp(v, k);
-    b.add("2^" + std::to_string(k), x);
-  }
-  for (int k : {-150, -100, -50, -20, -5, 5, 20, 50, 100, 150}) {
-    X12 x = base;
-    const double f = power_of_ten(k);
-    for (double& v : x) v *= f;
-    b.add("1e" + std::to_string(k), x);
-  }
-  for (int i = 0; i < 5; ++i) {
-    const int k = r.integer(-480, 480);
-    const double f = std::ldexp(r.uniform(1, 2), k);
-    X12 x = random_placement(r, random_well_shaped(r));
-    for (double& v : x) v *= f;
-    b.add("random-2^" + std::to_string(k), x);
-  }
-}
-
-void offsets(Builder& b) {
-  Random r(0x5eed0004);
-  b.start("offsets");
-  auto direction = [&r] {
-    P3 d;
-    double n2;
-    do {
-      d = random_point(r, 1);
-      n2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    } while (n2 > 1 || n2 < 0.0625);
-    const double n = std::sqrt(n2);
-    return P3{d[0] / n, d[1] / n, d[2] / n};
-  };
-  auto shifted = [&](double magnitude) {
-    const Local l = random_well_shaped(r);
-    const P3 d = direction();
-    return place(l.points(), {0.5, 0, 0}, random_rotation(r), 1,
-                 {magnitude * d[0], magnitude * d[1], magnitude * d[2]});
-  };
-  for (int k = 1; k <= 14; ++k) b.add("1e" + std::to_string(k), shifted(power_of_ten(k)));
-  for (int k : {3, 10, 20, 30, 40}) {  // all three coordinates offset by the same power of two
-    const Local l = random_well_shaped(r);
-    const double o = std::ldexp(1.0, k);
-    b.add("2^" + std::to_string(k), place(l.points(), {0.5, 0, 0}, random_rotation(r), 1, {o, -o, o}));
-  }
-  for (int i = 0; i < 11; ++i) {
-    const int k = r.integer(0, 12);
-    b.add("random-1e" + std::to_string(k), shifted(r.uniform(1, 10) * power_of_ten(k)));
-  }
-}
-
-// Exactly coplanar hinges off the coordinate planes: integer points a u + b v in the lattice plane
-// spanned by u = (1, 2, 2), v = (2, 1, -2) (u . v = 0, |u| = |v| = 3). `folded` puts x3 on x0's side.
-X12 lattice_hinge(bool folded) {
-  const std::array<int, 3> u{1, 2, 2}, v{2, 1, -2};
-  auto point = [&](int a, int c) {
-    return P3{static_cast<double>(a * u[0] + c * v[0]), static_cast<double>(a * u[1] + c * v[1]),
-              static_cast<double>(a * u[2] + c * v[2])};
-  };
-  const std::array<P3, 4> p{point(1, 3), point(0, 0), point(3, 0), folded ? point(2, 1) : point(2, -2)};
-  X12 x{};
-  for (int k = 0; k < 4; ++k)
-    for (int c = 0; c < 3; ++c) x[3 * k + c] = p[k][c];
-  return x;
-}
-
-void near_flat(Builder& b) {
-  Random r(0x5eed0005);
-  b.start("near-flat");
-  for (int k = 1; k <= 14; ++k)
-    for (double side : {1.0, -1.0}) {
-      Local l = random_well_shaped(r);
-      l.set_psi(side * power_of_ten(-k));
-      b.add(std::string(side > 0 ? "+" : "-") + "1e-" + std::to_string(k), random_placement(r, l));
-    }
-  Local flat;
-  flat.u0 = 0.375, flat.h0 = 1, flat.u3 = 0.75, flat.h3 = 0.5;
-  b.add("exact-axes", place(flat.points(), {0, 0, 0}, identity, 1, {0, 0, 0}));
-  b.add("exact-axes-offset", place(flat.points(), {0, 0, 0}, {0, 0, 1, 1, 0, 0, 0, 1, 0}, 1, {1024, -3, 0.5}));
-  b.add("exact-lattice", lattice_hinge(false));
-  X12 scaled = lattice_hinge(false);
-  for (double& v : scaled) v = std::ldexp(v, -20) + 0.25;
-  b.add("exact-lattice-scaled", scaled);
-}
-
-void near_folded(Builder& b) {
-  Random r(0x5eed0006);
-  b.start("near-folded");
-  for (int k = 1; k <= 14; ++k)
-    for (double side : {1.0, -1.0}) {
-      Local l = random_well_shaped(r);
-      l.u3 = r.uniform(0.3, 0.7);  // keep x3 off x0 when folded
-      if (std::fabs(l.u3 - l.u0) < 0.1) l.u3 = l.u0 + 0.15;
-      l.set_folded(power_of_ten(-k), side);
-      b.add(std::string(side > 0 ? "+" : "-") + "(pi-1e-" + std::to_string(k) + ")", random_placement(r, l));
-    }
-  Local fold;
-  fold.u0 = 0.375, fold.h0 = 1, fold.u3 = 0.75, fold.h3 = 0.5;
-  fold.sin_psi = 0, fold.cos_psi = -1;  // theta = +pi exactly (the branch cut)
-  b.add("exact-axes", place(fold.points(), {0, 0, 0}, identity, 1, {0, 0, 0}));
-  b.add("exact-lattice", lattice_hinge(true));
-  X12 scaled = lattice_hinge(true);
-  for (double& v : scaled) v = std::ldexp(v, 30) - 7;
-  b.add("exact-lattice-scaled", scaled);
-}
-
-void needles(Builder& b) {
-  Random r(0x5eed0007);
-  b.start("needles");
-  const std::array<const char*, 5> kinds{"cap-upper", "cap-lower", "cap-both", "spike-upper", "spike-lower"};
-  for (const char* kind : kinds)
-    for (int k = 2; k <= 12; k += 2) {
-      Local l = random_well_shaped(r);
-      const double small = power_of_ten(-k) * r.uniform(1, 2);
-      const std::string name(kind);
-      if (name == "cap-upper" || name == "cap-both") l.h0 = small;  // x0 nearly on the hinge edge
-      if (name == "cap-lower" || name == "cap-both") l.h3 = small;
-      if (name == "spike-upper") l.h0 = 1 / small, l.u0 = r.uniform(0, 1);  // x0 far away: long thin triangle
-      if (name == "spike-lower") l.h3 = 1 / small, l.u3 = r.uniform(0, 1);
-      b.add(name + "-1e-" + std::to_string(k), random_placement(r, l));
-    }
-}
-
-void short_hinge_edges(Builder& b) {
-  Random r(0x5eed0008);
-  b.start("short-hinge-edges");
-  for (int k = 1; k <= 12; ++k)
-    for (int variant = 0; variant < 2; ++variant) {
-      Local l = random_well_shaped(r);
-      l.L0 = power_of_ten(-k) * r.uniform(1, 2);
-      l.u0 = l.L0 * r.uniform(-1, 2), l.u3 = l.L0 * r.uniform(-1, 2);  // x0, x3 at distance ~1
-      b.add("1e-" + std::to_string(k), random_placement(r, l));
-    }
-  for (int k : {10, 20, 30, 40, 50, 60}) {
-    Local l = random_well_shaped(r);
-    l.L0 = std::ldexp(1.0, -k);
-    l.u0 = 0, l.u3 = l.L0;
-    // x1 at the origin, no offset: the hinge edge is far below the ulp of coordinates near 1.
-    b.add("2^-" + std::to_string(k), place(l.points(), {0, 0, 0}, random_rotation(r), 1, {0, 0, 0}));
-  }
-}
-
-void boundary_meshes(Builder& b) {
-  b.start("boundary-meshes");
-  for (const MeshCase& m : meshes()) {
-    const Topology t = build_topology(m.deformed);
-    for (std::size_t h = 0; h < t.hinges.size(); ++h)
-      b.add(m.name + "-hinge" + std::to_string(h), hinge_coordinates(m.deformed, t.hinges[h]));
-  }
-}
-
-// --- the hard families (hard_cases) ---------------------------------------------------------------
-
-// Adds x under `family` unless it is not a valid hinge with finite certified outputs (a random draw can
-// land on one: a needle whose apex rounds onto the hinge edge, say).
-void add_if_valid(std::vector<Case>& out, const std::string& family, const std::string& tag, const X12& x) {
-  if (!valid(x)) return;
-  out.push_back({family + "/" + std::to_string(out.size()) + "-" + tag, family, x});
-}
-
-// theta's local hinge of the file comment with a small h0 (cap), a large h0 (spike), either on either
-// side, or a cap above and a spike below.
-X12 random_needle(Random& r, std::string& tag) {
-  Local l = random_well_shaped(r);
-  const int k = r.integer(2, 15);
-  const double small = power_of_ten(-k) * r.uniform(1, 2);
-  static const std::array<const char*, 6> kinds{"cap-upper",   "cap-lower",   "cap-both",
-                                                "spike-upper", "spike-lower", "cap-spike"};
-  const std::string kind = kinds[static_cast<std::size_t>(r.integer(0, 5))];
-  if (kind == "cap-upper" || kind == "cap-both" || kind == "cap-spike") l.h0 = small;
-  if (kind == "cap-lower" || kind == "cap-both") l.h3 = small;
-  if (kind == "spike-upper") l.h0 = 1 / small, l.u0 = r.uniform(0, 1);
-  if (kind == "spike-lower" || kind == "cap-spike") l.h3 = 1 / small, l.u3 = r.uniform(0, 1);
-  tag = kind + "-1e-" + std::to_string(k);
-  return random_placement(r, l);
-}
-
-// --- float32: the categories and the hard families within float32's range ----------------------------
-//
-// Every coordinate is a float (or zero), held in a double: the hinges are built as above and rounded to
-// float (a conversion, correctly rounded to nearest-even by IEEE-754), which moves a vertex by up to 2^-24 of
-// its magnitude. That keeps what a category is about where the feature is larger than the rounding (an
-// angle, a height, a hinge edge above about 1e-5 of the coordinates); below that a hinge is built in an
-// axis-aligned frame (the local frame of the file comment, a signed permutation of the axes, offsets only
-// along axes where they cannot round the small feature away), so that the feature is a float of its own
-// and survives exactly: angles to 1e-30, caps to 1e-12.
-
-double to_float(double v) { return static_cast<double>(static_cast<float>(v)); }
-
-X12 to_float(X12 x) {
-  for (double& v : x) v = to_float(v);
-  return x;
-}
-
-// Whether every coordinate is zero or a normal float (the rounding above gives floats; this excludes the
-// subnormal ones).
+// Whether every coordinate is zero or a normal float (to_float gives floats; this excludes the subnormal
+// ones).
 bool normal_float_coordinates(const X12& x) {
   for (double v : x)
     if (v != 0 && !(std::fabs(v) >= 0x1p-126 && std::fabs(v) <= 0x1.fffffep127)) return false;
@@ -455,16 +262,133 @@ bool valid_float32(const X12& x) {
   }
 }
 
-// A random rotation of the axes (one of the 24 signed permutations with determinant +1): exact.
-Rotation random_axes(Random& r) {
-  static constexpr int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
-  const int k = r.integer(0, 5);
-  const double s0 = r.sign(), s1 = r.sign();
-  const double s2 = s0 * s1 * (k < 3 ? 1 : -1);  // odd permutations need an odd number of sign flips
-  const double signs[3] = {s0, s1, s2};
-  Rotation R{};
-  for (int row = 0; row < 3; ++row) R[3 * row + orders[k][row]] = signs[row];
-  return R;
+// --- the two formats ----------------------------------------------------------------------------------
+//
+// The float32 hinges are built as the double ones, within float32's range, and rounded to float (a
+// conversion, correctly rounded to nearest-even by IEEE-754), which moves a vertex by up to 2^-24 of its
+// magnitude. That keeps what a category is about where the feature is larger than the rounding (an angle, a
+// height, a hinge edge above about 1e-5 of the coordinates); below that a hinge is built in an axis-aligned
+// frame (the local frame of the file comment, a signed permutation of the axes, offsets only along axes
+// where they cannot round the small feature away), so that the feature is a float of its own and survives
+// exactly: angles to 1e-30, caps to 1e-12.
+
+X12 to_double(X12 x) { return x; }  // the hinges are built in double: nothing to round
+
+double to_float(double v) { return static_cast<double>(static_cast<float>(v)); }
+
+X12 to_float(X12 x) {
+  for (double& v : x) v = to_float(v);
+  return x;
+}
+
+// A set's number format: its rule, its rounding, its seeds and the ranges its hinges are built within
+// (docs/conformance.md, docs/conformance-format.md "float32 sets", docs/hard-cases.md).
+struct Format {
+  const char* set;            // names the set in the message of a case that breaks its rule
+  bool float32;               // selects the few draws that the float32 sets make in another order or way
+  bool (*valid)(const X12&);  // the rule every case obeys
+  X12 (*round)(X12);          // applied to a hinge placed in space: to_double (nothing) or to_float
+  int rotated_to;             // a feature of 10^-k (angle, cap) rotated and offset for k <= this, else axis-aligned
+  int short_edge_offset_to;   // a hinge edge of 2^-k u offset at random for k <= this, else at the origin
+
+  // The quick set: category i (report order, from 1) draws from seed + i.
+  std::uint64_t seed;
+  std::array<int, 15> scale_twos;       // scales: one hinge times 2^k,
+  std::array<int, 10> scale_tens;       // times 10^k,
+  int random_scale_to;                  // and 5 random hinges times 2^k u (u in [1, 2)), |k| <= this
+  int offset_tens;                      // offsets: 10^k in a random direction, k = 1 ... this,
+  int per_offset_ten;                   // that many hinges each,
+  std::array<int, 5> offset_twos;       // (2^k, -2^k, 2^k),
+  int random_offsets;                   // and that many hinges offset 10^k u (u in [1, 10)),
+  int random_offset_to;                 // k = 0 ... this
+  std::array<int, 14> small_exponents;  // near-flat, near-folded: theta = +-10^-k, +-(pi - 10^-k)
+  int folded_lattice_exponent;          // near-folded: the folded lattice hinge times 2^this, minus 7
+
+  // The hard families.
+  int needles_to;           // caps of 10^-k and spikes of 10^k, k = 2 ... this
+  int angles_to;            // near-flat, near-folded: 10^-k u from flat or folded, k = 1 ... this
+  int folded_scale;         // folded: times 2^k, |k| <= this
+  int offsets_to;           // offsets: 10^k u (u in [1, 10)), k = 0 ... this
+  int scales_to;            // scales: times 2^k, |k| <= this
+  int combined_needles_to;  // combined: needles of 10^-k, k = 2 ... this,
+  int combined_scale;       // offset, then times 2^k, |k| <= this
+};
+
+constexpr Format float64_format{
+    .set = "conformance",
+    .float32 = false,
+    .valid = valid,
+    .round = to_double,
+    .rotated_to = std::numeric_limits<int>::max(),  // every feature placed at random
+    // Beyond 2^-40 the hinge edge must sit near the origin to be representable apart from its neighbours.
+    .short_edge_offset_to = 40,
+    .seed = 0x5eed0000,
+    .scale_twos = {-500, -400, -300, -200, -100, -50, -10, 0, 10, 50, 100, 200, 300, 400, 500},
+    .scale_tens = {-150, -100, -50, -20, -5, 5, 20, 50, 100, 150},
+    .random_scale_to = 480,
+    .offset_tens = 14,
+    .per_offset_ten = 1,
+    .offset_twos = {3, 10, 20, 30, 40},
+    .random_offsets = 11,
+    .random_offset_to = 12,
+    .small_exponents = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14},
+    .folded_lattice_exponent = 30,
+    .needles_to = 15,
+    .angles_to = 15,
+    .folded_scale = 300,
+    .offsets_to = 15,
+    .scales_to = 500,
+    .combined_needles_to = 15,
+    .combined_scale = 300,
+};
+
+constexpr Format float32_format{
+    .set = "float32 conformance",
+    .float32 = true,
+    .valid = valid_float32,
+    .round = to_float,
+    .rotated_to = 4,  // the rounding moves theta, a cap, by under 1e-3 of itself down to 1e-4
+    // Up to 2^-16 the rounding moves the edge's ends by under 1e-2 of its length; below, x1 = 0 and
+    // x2 = R (L0, 0, 0) round on the edge's own scale.
+    .short_edge_offset_to = 16,
+    .seed = 0x5eed3200,
+    .scale_twos = {-50, -40, -30, -20, -10, -5, -1, 0, 1, 5, 10, 20, 30, 40, 50},
+    .scale_tens = {-12, -10, -8, -5, -2, 2, 5, 8, 10, 12},
+    .random_scale_to = 45,
+    .offset_tens = 6,
+    .per_offset_ten = 2,
+    .offset_twos = {3, 8, 12, 16, 20},
+    .random_offsets = 13,
+    .random_offset_to = 5,
+    .small_exponents = {1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 15, 20, 25, 30},
+    .folded_lattice_exponent = 10,  // integers below 2^24: floats
+    .needles_to = 12,
+    .angles_to = 30,
+    .folded_scale = 40,
+    .offsets_to = 5,
+    .scales_to = 50,
+    .combined_needles_to = 4,  // caps placed at random, not axis-aligned
+    .combined_scale = 40,
+};
+
+// --- the constructions --------------------------------------------------------------------------------
+
+// A random well-shaped local hinge.
+Local random_well_shaped(Random& r) {
+  Local l;
+  l.u0 = r.uniform(0.25, 0.75), l.h0 = r.uniform(0.6, 1.3);
+  l.u3 = r.uniform(0.25, 0.75), l.h3 = r.uniform(0.6, 1.3);
+  const double side = r.sign();
+  l.set_psi(side * r.uniform(0.1, pi - 0.1));
+  return l;
+}
+
+// A random well-shaped local hinge whose x3 stays off x0 when folded.
+Local random_foldable(Random& r) {
+  Local l = random_well_shaped(r);
+  l.u3 = r.uniform(0.3, 0.7);
+  if (std::fabs(l.u3 - l.u0) < 0.1) l.u3 = l.u0 + 0.15;
+  return l;
 }
 
 // The local hinge in an axis-aligned frame, exactly: the local coordinates rounded to float, offset along
@@ -479,16 +403,90 @@ X12 axis_aligned(Random& r, const Local& l, bool offset_y, bool offset_z) {
   return place(p, {0, 0, 0}, random_axes(r), 1, {0, 0, 0});
 }
 
-class Builder32 {  // Builder with float32's rules: a fixed-list case must be valid, a random draw may be drawn again
+// l with a feature of 10^-k (an angle from flat or folded, a cap): placed at random and rounded where the
+// format keeps the feature that way, else axis-aligned, never offset along local z and along local y only
+// when `offset_y` (an angle lies along local z, a cap's heights along local y and z).
+X12 place_feature(Random& r, const Format& f, const Local& l, int k, bool offset_y) {
+  if (k > f.rotated_to) return axis_aligned(r, l, offset_y, false);
+  return f.round(random_placement(r, l));
+}
+
+// theta = side 10^-k u from l (u = 1, or drawn from [1, 2) when `jitter`).
+X12 near_flat_hinge(Random& r, const Format& f, Local l, int k, double side, bool jitter) {
+  l.set_psi(side * power_of_ten(-k) * (jitter ? r.uniform(1, 2) : 1.0));
+  return place_feature(r, f, l, k, true);
+}
+
+// theta = side (pi - 10^-k u) from l (from random_foldable; u as above).
+X12 near_folded_hinge(Random& r, const Format& f, Local l, int k, double side, bool jitter) {
+  l.set_folded(power_of_ten(-k) * (jitter ? r.uniform(1, 2) : 1.0), side);
+  return place_feature(r, f, l, k, true);
+}
+
+const std::array<const char*, 6> needle_kinds{"cap-upper",   "cap-lower",   "cap-both",
+                                              "spike-upper", "spike-lower", "cap-spike"};
+
+// l made a needle of the given kind, `small` = 10^-k u: a cap (a height `small` above the hinge edge), a
+// spike (a vertex 1 / small away: a long thin triangle), either on either side, or a cap above and a spike
+// below. Caps are placed as features of 10^-k; spikes at random at every size (rounding moves the far
+// vertex by 2^-24 of its distance).
+X12 needle(Random& r, const Format& f, Local l, const std::string& kind, int k, double small) {
+  if (kind == "cap-upper" || kind == "cap-both" || kind == "cap-spike") l.h0 = small;  // x0 nearly on the edge
+  if (kind == "cap-lower" || kind == "cap-both") l.h3 = small;
+  if (kind == "spike-upper") l.h0 = 1 / small, l.u0 = r.uniform(0, 1);  // x0 far away
+  if (kind == "spike-lower" || kind == "cap-spike") l.h3 = 1 / small, l.u3 = r.uniform(0, 1);
+  if (kind.rfind("cap", 0) == 0) return place_feature(r, f, l, k, false);
+  return f.round(random_placement(r, l));
+}
+
+// A needle of the given kind at 10^-k from a random well-shaped hinge.
+X12 random_needle(Random& r, const Format& f, const std::string& kind, int k) {
+  const Local l = random_well_shaped(r);
+  const double small = power_of_ten(-k) * r.uniform(1, 2);
+  return needle(r, f, l, kind, k, small);
+}
+
+// A hinge edge of length L0 = 2^-k u (u in [1, 2)) with x0 and x3 at distance about 1: offset at random for
+// k <= f.short_edge_offset_to, else with x1 at the origin and no offset.
+X12 short_hinge_edge(Random& r, const Format& f, int k) {
+  Local l = random_well_shaped(r);
+  l.L0 = std::ldexp(r.uniform(1, 2), -k);
+  l.u0 = l.L0 * r.uniform(-1, 2), l.u3 = l.L0 * r.uniform(-1, 2);
+  const P3 offset = k <= f.short_edge_offset_to ? random_point(r, 1) : P3{0, 0, 0};
+  return f.round(place(l.points(), {0, 0, 0}, random_rotation(r), 1, offset));
+}
+
+// l rotated at random about its hinge edge's midpoint (L0 = 1) and translated by m d.
+X12 translated(Random& r, const Local& l, double m, const P3& d) {
+  return place(l.points(), {0.5, 0, 0}, random_rotation(r), 1, {m * d[0], m * d[1], m * d[2]});
+}
+
+// A random well-shaped hinge translated by m in a random direction: a unit vector, or (float32) a random
+// point of [-1, 1]^3.
+X12 offset_hinge(Random& r, const Format& f, double m) {
+  const Local l = random_well_shaped(r);
+  const P3 d = f.float32 ? random_point(r, 1) : random_direction(r);
+  return f.round(translated(r, l, m, d));
+}
+
+// --- the categories (inputs, float32_inputs) ----------------------------------------------------------
+
+std::string two_digits(int i) { return (i < 10 ? "0" : "") + std::to_string(i); }
+
+std::string signed_tag(double side, const std::string& tag) { return (side > 0 ? "+" : "-") + tag; }
+
+// Numbers the cases of a category and checks each against the format's rule.
+class Builder {
  public:
-  explicit Builder32(std::vector<Case>& out) : out_(out) {}
+  Builder(std::vector<Case>& out, const Format& format) : out_(out), format_(format) {}
+  const Format& format() const { return format_; }
   void start(const std::string& category) {
     category_ = category;
     index_ = 0;
   }
   void add(const std::string& tag, const X12& x) {
-    if (!valid_float32(x))
-      throw std::logic_error("float32 conformance input " + category_ + "/" + tag + " is not valid");
+    if (!format_.valid(x))
+      throw std::logic_error(std::string(format_.set) + " input " + category_ + "/" + tag + " is not valid");
     out_.push_back({category_ + "/" + two_digits(index_++) + "-" + tag, category_, x});
   }
   // Adds the first valid hinge of make() (bounded: a construction that fails 100 times in a row is a bug).
@@ -496,157 +494,122 @@ class Builder32 {  // Builder with float32's rules: a fixed-list case must be va
   void add_drawn(const std::string& tag, Make&& make) {
     for (int attempt = 0; attempt < 100; ++attempt) {
       const X12 x = make();
-      if (valid_float32(x)) {
+      if (format_.valid(x)) {
         add(tag, x);
         return;
       }
     }
-    throw std::logic_error("float32 conformance input " + category_ + "/" + tag + ": no valid draw");
+    throw std::logic_error(std::string(format_.set) + " input " + category_ + "/" + tag + ": no valid draw");
   }
 
  private:
   std::vector<Case>& out_;
+  const Format& format_;
   std::string category_;
   int index_ = 0;
 };
 
-// The constructions shared by the float32 categories and the float32 hard families.
-
-// theta = side 10^-k u (u in [1, 2) when `jitter`): rotated and offset (then rounded) down to 1e-4, where the
-// rounding moves theta by under 1e-3 of itself; in the axis-aligned frame below (no offset along local z).
-X12 make_near_flat32(Random& r, int k, double side, bool jitter) {
-  Local l = random_well_shaped(r);
-  l.set_psi(side * power_of_ten(-k) * (jitter ? r.uniform(1, 2) : 1.0));
-  return k <= 4 ? to_float(random_placement(r, l)) : axis_aligned(r, l, true, false);
-}
-
-// theta = side (pi - 10^-k u): likewise.
-X12 make_near_folded32(Random& r, int k, double side, bool jitter) {
-  Local l = random_well_shaped(r);
-  l.u3 = r.uniform(0.3, 0.7);  // keep x3 off x0 when folded
-  if (std::fabs(l.u3 - l.u0) < 0.1) l.u3 = l.u0 + 0.15;
-  l.set_folded(power_of_ten(-k) * (jitter ? r.uniform(1, 2) : 1.0), side);
-  return k <= 4 ? to_float(random_placement(r, l)) : axis_aligned(r, l, true, false);
-}
-
-// A cap (a height 10^-k u above the hinge edge) or a spike (a vertex 10^k / u away) of the given kind:
-// caps rotated and offset down to 1e-4, axis-aligned below;
-// spikes rotated and offset at every size (rounding moves the far vertex by 2^-24 of its distance).
-// Axis-aligned caps are offset along the hinge edge only: the heights of x0 and x3 lie along local y and z.
-X12 make_needle32(Random& r, const std::string& kind, int k) {
-  Local l = random_well_shaped(r);
-  const double small = power_of_ten(-k) * r.uniform(1, 2);
-  if (kind == "cap-upper" || kind == "cap-both" || kind == "cap-spike") l.h0 = small;
-  if (kind == "cap-lower" || kind == "cap-both") l.h3 = small;
-  if (kind == "spike-upper") l.h0 = 1 / small, l.u0 = r.uniform(0, 1);
-  if (kind == "spike-lower" || kind == "cap-spike") l.h3 = 1 / small, l.u3 = r.uniform(0, 1);
-  if (kind.rfind("cap", 0) == 0 && k > 4) return axis_aligned(r, l, false, false);
-  return to_float(random_placement(r, l));
-}
-
-// A hinge edge of length L0 = 2^-k u (u in [1, 2)) and the other vertices at distance about 1: offset
-// (then rounded) while the rounding moves the edge's ends by under 1e-2 of its length (k <= 16), else with
-// x1 at the origin and no offset (x2 = R (L0, 0, 0), its coordinates floats of their own).
-X12 make_short_hinge_edge32(Random& r, int k) {
-  Local l = random_well_shaped(r);
-  l.L0 = std::ldexp(r.uniform(1, 2), -k);
-  l.u0 = l.L0 * r.uniform(-1, 2), l.u3 = l.L0 * r.uniform(-1, 2);
-  const P3 offset = k <= 16 ? random_point(r, 1) : P3{0, 0, 0};
-  return to_float(place(l.points(), {0, 0, 0}, random_rotation(r), 1, offset));
-}
-
-// A random well-shaped hinge offset by `magnitude` in a random direction, rounded.
-X12 make_offset32(Random& r, double magnitude) {
-  const Local l = random_well_shaped(r);
-  const P3 d = random_point(r, 1);
-  return to_float(
-      place(l.points(), {0.5, 0, 0}, random_rotation(r), 1, {magnitude * d[0], magnitude * d[1], magnitude * d[2]}));
-}
-
-X12 scaled_by_power_of_two(X12 x, int k) {
-  for (double& v : x) v = std::ldexp(v, k);  // exact: float coordinates stay floats within the range
-  return x;
-}
-
-const std::array<const char*, 6> needle_kinds{"cap-upper",   "cap-lower",   "cap-both",
-                                              "spike-upper", "spike-lower", "cap-spike"};
-
-void well_shaped32(Builder32& b) {
-  Random r(0x5eed3201);
+void well_shaped(Builder& b) {
+  const Format& f = b.format();
+  Random r(f.seed + 1);
   b.start("well-shaped");
   for (int i = 0; i < 40;) {
-    const X12 x = to_float(random_placement(r, random_well_shaped(r), r.uniform(0.5, 2)));
-    if (!well_shaped_exactly(x) || !valid_float32(x)) continue;
+    const double scale = r.uniform(0.5, 2);
+    const Local l = random_well_shaped(r);
+    const X12 x = f.round(random_placement(r, l, scale));
+    if (!well_shaped_exactly(x) || !f.valid(x)) continue;
     b.add("random", x);
     ++i;
   }
 }
 
-void rotations32(Builder32& b) {
-  Random r(0x5eed3202);
+void rotations(Builder& b) {
+  const Format& f = b.format();
+  Random r(f.seed + 2);
   b.start("rotations");
   Local l;
   l.u0 = 0.375, l.h0 = 0.875, l.u3 = 0.625, l.h3 = 0.75;
   l.set_psi(1.125);
   const P3 center{0.5, 0.25, 0};
-  for (const auto& [name, R] : exact_rotations) b.add(name, to_float(place(l.points(), center, R, 1, {0, 0, 0})));
-  for (int i = 0; i < 22; ++i) b.add("random", to_float(place(l.points(), center, random_rotation(r), 1, {0, 0, 0})));
+  for (const auto& [name, R] : exact_rotations) b.add(name, f.round(place(l.points(), center, R, 1, {0, 0, 0})));
+  for (int i = 0; i < 22; ++i) b.add("random", f.round(place(l.points(), center, random_rotation(r), 1, {0, 0, 0})));
 }
 
-void scales32(Builder32& b) {
-  Random r(0x5eed3203);
+void scales(Builder& b) {
+  const Format& f = b.format();
+  Random r(f.seed + 3);
   b.start("scales");
   Local l;
   l.u0 = 0.4375, l.h0 = 0.8125, l.u3 = 0.5625, l.h3 = 0.9375;
   l.set_psi(-0.875);
-  const X12 base = to_float(place(l.points(), {0.5, 0, 0}, random_rotation(r), 1, random_point(r, 0.5)));
-  for (int k : {-50, -40, -30, -20, -10, -5, -1, 0, 1, 5, 10, 20, 30, 40, 50})
-    b.add("2^" + std::to_string(k), scaled_by_power_of_two(base, k));
-  for (int k : {-12, -10, -8, -5, -2, 2, 5, 8, 10, 12}) {
-    X12 x = base;
-    const double f = power_of_ten(k);
-    for (double& v : x) v = to_float(v * f);
-    b.add("1e" + std::to_string(k), x);
+  Rotation R;
+  P3 offset;
+  if (f.float32) {  // draws the offset first
+    offset = random_point(r, 0.5);
+    R = random_rotation(r);
+  } else {
+    R = random_rotation(r);
+    offset = random_point(r, 0.5);
   }
+  const X12 base = f.round(place(l.points(), {0.5, 0, 0}, R, 1, offset));
+  for (int k : f.scale_twos) b.add("2^" + std::to_string(k), scaled_by_power_of_two(base, k));
+  for (int k : f.scale_tens) b.add("1e" + std::to_string(k), f.round(times(base, power_of_ten(k))));
   for (int i = 0; i < 5; ++i) {
-    const int k = r.integer(-45, 45);
+    const int k = r.integer(-f.random_scale_to, f.random_scale_to);
     b.add_drawn("random-2^" + std::to_string(k), [&] {
-      X12 x = random_placement(r, random_well_shaped(r));
-      const double f = std::ldexp(r.uniform(1, 2), k);
-      for (double& v : x) v = to_float(v * f);
-      return x;
+      X12 x;
+      double factor;
+      if (f.float32) {  // draws the hinge first
+        x = random_placement(r, random_well_shaped(r));
+        factor = std::ldexp(r.uniform(1, 2), k);
+      } else {
+        factor = std::ldexp(r.uniform(1, 2), k);
+        x = random_placement(r, random_well_shaped(r));
+      }
+      return f.round(times(x, factor));
     });
   }
 }
 
-void offsets32(Builder32& b) {
-  Random r(0x5eed3204);
+void offsets(Builder& b) {
+  const Format& f = b.format();
+  Random r(f.seed + 4);
   b.start("offsets");
-  for (int k = 1; k <= 6; ++k)
-    for (int variant = 0; variant < 2; ++variant)
-      b.add_drawn("1e" + std::to_string(k), [&] { return make_offset32(r, power_of_ten(k)); });
-  for (int k : {3, 8, 12, 16, 20}) {  // all three coordinates offset by the same power of two
+  for (int k = 1; k <= f.offset_tens; ++k)
+    for (int i = 0; i < f.per_offset_ten; ++i)
+      b.add_drawn("1e" + std::to_string(k), [&] { return offset_hinge(r, f, power_of_ten(k)); });
+  for (int k : f.offset_twos)  // all three coordinates offset by the same power of two
     b.add_drawn("2^" + std::to_string(k), [&] {
       const double o = std::ldexp(1.0, k);
-      return to_float(place(random_well_shaped(r).points(), {0.5, 0, 0}, random_rotation(r), 1, {o, -o, o}));
+      Local l;
+      Rotation R;
+      if (f.float32) {  // draws the rotation first
+        R = random_rotation(r);
+        l = random_well_shaped(r);
+      } else {
+        l = random_well_shaped(r);
+        R = random_rotation(r);
+      }
+      return f.round(place(l.points(), {0.5, 0, 0}, R, 1, {o, -o, o}));
     });
-  }
-  for (int i = 0; i < 13; ++i) {
-    const int k = r.integer(0, 5);
-    b.add_drawn("random-1e" + std::to_string(k), [&] { return make_offset32(r, r.uniform(1, 10) * power_of_ten(k)); });
+  for (int i = 0; i < f.random_offsets; ++i) {
+    const int k = r.integer(0, f.random_offset_to);
+    b.add_drawn("random-1e" + std::to_string(k), [&] {
+      const double m = r.uniform(1, 10) * power_of_ten(k);
+      return offset_hinge(r, f, m);
+    });
   }
 }
 
-const std::array<int, 14> small_exponents32{1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 15, 20, 25, 30};
-
-void near_flat32(Builder32& b) {
-  Random r(0x5eed3205);
+void near_flat(Builder& b) {
+  const Format& f = b.format();
+  Random r(f.seed + 5);
   b.start("near-flat");
-  for (int k : small_exponents32)
+  for (int k : f.small_exponents)
     for (double side : {1.0, -1.0})
-      b.add_drawn(std::string(side > 0 ? "+" : "-") + "1e-" + std::to_string(k),
-                  [&] { return make_near_flat32(r, k, side, false); });
-  Local flat;
+      b.add_drawn(signed_tag(side, "1e-" + std::to_string(k)),
+                  [&] { return near_flat_hinge(r, f, random_well_shaped(r), k, side, false); });
+  Local flat;  // theta = 0 exactly
   flat.u0 = 0.375, flat.h0 = 1, flat.u3 = 0.75, flat.h3 = 0.5;
   b.add("exact-axes", place(flat.points(), {0, 0, 0}, identity, 1, {0, 0, 0}));
   b.add("exact-axes-offset", place(flat.points(), {0, 0, 0}, {0, 0, 1, 1, 0, 0, 0, 1, 0}, 1, {1024, -3, 0.5}));
@@ -656,46 +619,181 @@ void near_flat32(Builder32& b) {
   b.add("exact-lattice-scaled", scaled);
 }
 
-void near_folded32(Builder32& b) {
-  Random r(0x5eed3206);
+void near_folded(Builder& b) {
+  const Format& f = b.format();
+  Random r(f.seed + 6);
   b.start("near-folded");
-  for (int k : small_exponents32)
+  for (int k : f.small_exponents)
     for (double side : {1.0, -1.0})
-      b.add_drawn(std::string(side > 0 ? "+" : "-") + "(pi-1e-" + std::to_string(k) + ")",
-                  [&] { return make_near_folded32(r, k, side, false); });
+      b.add_drawn(signed_tag(side, "(pi-1e-" + std::to_string(k) + ")"),
+                  [&] { return near_folded_hinge(r, f, random_foldable(r), k, side, false); });
   Local fold;
   fold.u0 = 0.375, fold.h0 = 1, fold.u3 = 0.75, fold.h3 = 0.5;
   fold.sin_psi = 0, fold.cos_psi = -1;  // theta = +pi exactly (the branch cut)
   b.add("exact-axes", place(fold.points(), {0, 0, 0}, identity, 1, {0, 0, 0}));
   b.add("exact-lattice", lattice_hinge(true));
   X12 scaled = lattice_hinge(true);
-  for (double& v : scaled) v = std::ldexp(v, 10) - 7;  // integers below 2^24: floats
+  for (double& v : scaled) v = std::ldexp(v, f.folded_lattice_exponent) - 7;
   b.add("exact-lattice-scaled", scaled);
 }
 
-void needles32(Builder32& b) {
-  Random r(0x5eed3207);
+void needles(Builder& b) {
+  const Format& f = b.format();
+  Random r(f.seed + 7);
   b.start("needles");
-  for (int kind = 0; kind < 5; ++kind)
+  for (int kind = 0; kind < 5; ++kind)  // every kind but cap-spike
     for (int k = 2; k <= 12; k += 2)
       b.add_drawn(std::string(needle_kinds[kind]) + "-1e-" + std::to_string(k),
-                  [&] { return make_needle32(r, needle_kinds[kind], k); });
+                  [&] { return random_needle(r, f, needle_kinds[kind], k); });
 }
 
-void short_hinge_edges32(Builder32& b) {
-  Random r(0x5eed3208);
+void short_hinge_edges(Builder& b) {
+  const Format& f = b.format();
+  Random r(f.seed + 8);
   b.start("short-hinge-edges");
-  for (int k = 2; k <= 60; k += 2)
-    b.add_drawn("2^-" + std::to_string(k), [&] { return make_short_hinge_edge32(r, k); });
+  if (f.float32) {  // |e0| = 2^-k u, k = 2 ... 60
+    for (int k = 2; k <= 60; k += 2) b.add_drawn("2^-" + std::to_string(k), [&] { return short_hinge_edge(r, f, k); });
+    return;
+  }
+  for (int k = 1; k <= 12; ++k)  // |e0| = 10^-k u, twice each, x0 and x3 at distance about 1
+    for (int i = 0; i < 2; ++i)
+      b.add_drawn("1e-" + std::to_string(k), [&] {
+        Local l = random_well_shaped(r);
+        l.L0 = power_of_ten(-k) * r.uniform(1, 2);
+        l.u0 = l.L0 * r.uniform(-1, 2), l.u3 = l.L0 * r.uniform(-1, 2);
+        return random_placement(r, l);
+      });
+  for (int k : {10, 20, 30, 40, 50, 60}) {  // |e0| = 2^-k exactly
+    Local l = random_well_shaped(r);
+    l.L0 = std::ldexp(1.0, -k);
+    l.u0 = 0, l.u3 = l.L0;
+    // x1 at the origin, no offset: the hinge edge is far below the ulp of coordinates near 1.
+    b.add("2^-" + std::to_string(k), place(l.points(), {0, 0, 0}, random_rotation(r), 1, {0, 0, 0}));
+  }
 }
 
-void boundary_meshes32(Builder32& b) {
+void boundary_meshes(Builder& b) {
   b.start("boundary-meshes");
   for (const MeshCase& m : meshes()) {
     const Topology t = build_topology(m.deformed);
     for (std::size_t h = 0; h < t.hinges.size(); ++h)
-      b.add(m.name + "-hinge" + std::to_string(h), to_float(hinge_coordinates(m.deformed, t.hinges[h])));
+      b.add(m.name + "-hinge" + std::to_string(h), b.format().round(hinge_coordinates(m.deformed, t.hinges[h])));
   }
+}
+
+std::vector<Case> quick_set(const Format& f) {
+  std::vector<Case> cases;
+  Builder b(cases, f);
+  well_shaped(b);
+  rotations(b);
+  scales(b);
+  offsets(b);
+  near_flat(b);
+  near_folded(b);
+  needles(b);
+  short_hinge_edges(b);
+  boundary_meshes(b);
+  return cases;
+}
+
+// --- the hard families (hard_cases, hard_cases_float32) -----------------------------------------------
+
+// per_family draws of each family, family after family from one generator; a draw that breaks the format's
+// rule (a needle whose apex rounds onto the hinge edge, say) is dropped. Ids "family/N-tag", N counting the
+// cases kept. Some draws come in another order in the float32 families (`f.float32`).
+std::vector<Case> hard_set(const Format& f, std::uint64_t seed, int per_family) {
+  std::vector<Case> out;
+  Random r(seed);
+  auto add = [&](const std::string& family, const std::string& tag, const X12& x) {
+    if (f.valid(x)) out.push_back({family + "/" + std::to_string(out.size()) + "-" + tag, family, x});
+  };
+  struct Needle {
+    std::string tag;
+    int k;
+    X12 x;
+  };
+  // A needle of a random kind at 10^-k, k = 2 ... k_to (float32: the kind and k first).
+  auto random_kind_needle = [&](int k_to) {
+    if (f.float32) {
+      const std::string kind = needle_kinds[static_cast<std::size_t>(r.integer(0, 5))];
+      const int k = r.integer(2, k_to);
+      return Needle{kind + "-1e-" + std::to_string(k), k, random_needle(r, f, kind, k)};
+    }
+    const Local l = random_well_shaped(r);
+    const int k = r.integer(2, k_to);
+    const double small = power_of_ten(-k) * r.uniform(1, 2);
+    const std::string kind = needle_kinds[static_cast<std::size_t>(r.integer(0, 5))];
+    return Needle{kind + "-1e-" + std::to_string(k), k, needle(r, f, l, kind, k, small)};
+  };
+  // A local hinge from make() and a random side (float32: the side first).
+  auto with_side = [&](Local (*make)(Random&)) {
+    std::pair<Local, double> p;
+    if (f.float32) {
+      p.second = r.sign();
+      p.first = make(r);
+    } else {
+      p.first = make(r);
+      p.second = r.sign();
+    }
+    return p;
+  };
+
+  for (int i = 0; i < per_family; ++i) {  // caps of 10^-k, spikes of 10^k
+    const Needle n = random_kind_needle(f.needles_to);
+    add("needles", n.tag, n.x);
+  }
+  for (int i = 0; i < per_family; ++i) {  // hinge edges from 2^-1 to 2^-60 of the others
+    const int k = r.integer(1, 60);
+    add("short-hinge-edges", "2^-" + std::to_string(k), short_hinge_edge(r, f, k));
+  }
+  for (int i = 0; i < per_family; ++i) {  // |theta| = 10^-k u
+    const int k = r.integer(1, f.angles_to);
+    const auto [l, side] = with_side(random_well_shaped);
+    add("near-flat", "1e-" + std::to_string(k), near_flat_hinge(r, f, l, k, side, true));
+  }
+  for (int i = 0; i < per_family; ++i) {  // |theta| = pi - 10^-k u
+    const int k = r.integer(1, f.angles_to);
+    const auto [l, side] = with_side(random_foldable);
+    add("near-folded", "pi-1e-" + std::to_string(k), near_folded_hinge(r, f, l, k, side, true));
+  }
+  for (int i = 0; i < per_family; ++i) {  // exactly folded (theta = +pi) or flat, on lattice planes, scaled
+    X12 x = lattice_hinge(i % 2 == 0);
+    const int k = r.integer(-f.folded_scale, f.folded_scale);
+    const double o = std::ldexp(static_cast<double>(r.integer(-64, 64)), k);
+    for (double& v : x) v = std::ldexp(v, k) + o;  // float32: at most 8 significant bits, floats
+    add("folded", std::string(i % 2 == 0 ? "folded" : "flat") + "-2^" + std::to_string(k), x);
+  }
+  for (int i = 0; i < per_family; ++i) {  // offset 10^k u times the hinge's size
+    const int k = r.integer(0, f.offsets_to);
+    if (f.float32) {  // draws the magnitude first
+      const double m = power_of_ten(k) * r.uniform(1, 10);
+      add("offsets", "1e" + std::to_string(k), offset_hinge(r, f, m));
+      continue;
+    }
+    const Local l = random_well_shaped(r);
+    const P3 d = random_point(r, 1);
+    const double m = power_of_ten(k) * r.uniform(1, 10);
+    add("offsets", "1e" + std::to_string(k), translated(r, l, m, d));
+  }
+  for (int i = 0; i < per_family; ++i) {  // scaled by 2^k
+    const int k = r.integer(-f.scales_to, f.scales_to);
+    add("scales", "2^" + std::to_string(k),
+        scaled_by_power_of_two(f.round(random_placement(r, random_well_shaped(r))), k));
+  }
+  for (int i = 0; i < per_family; ++i) {  // a needle, offset by 10^j in a random direction, rounded, scaled
+    const Needle n = random_kind_needle(f.combined_needles_to);
+    // float32: j <= 5 - k, so that rounding moves a cap of 10^-k by under 1e-2 of it
+    const int j = r.integer(0, f.float32 ? 5 - n.k : 8);
+    const double o = power_of_ten(j);
+    const P3 d = random_point(r, 1);
+    const int e = r.integer(-f.combined_scale, f.combined_scale);
+    X12 x = n.x;
+    for (int v = 0; v < 4; ++v)
+      for (int c = 0; c < 3; ++c) x[3 * v + c] += o * d[c];
+    add("combined", n.tag + "-offset-1e" + std::to_string(j) + "-2^" + std::to_string(e),
+        scaled_by_power_of_two(f.round(x), e));
+  }
+  return out;
 }
 
 std::string four_digits(int i) {
@@ -716,153 +814,6 @@ std::vector<Case> deep_ids(std::vector<Case> cases) {
 
 }  // namespace
 
-const std::vector<std::string>& hard_families() {
-  static const std::vector<std::string> names{"needles", "short-hinge-edges", "near-flat", "near-folded",
-                                              "folded",  "offsets",           "scales",    "combined"};
-  return names;
-}
-
-std::vector<Case> hard_cases(std::uint64_t seed, int per_family) {
-  std::vector<Case> out;
-  Random r(seed);
-  for (int i = 0; i < per_family; ++i) {  // needles: caps and spikes down to 1e-15
-    std::string tag;
-    const X12 x = random_needle(r, tag);
-    add_if_valid(out, "needles", tag, x);
-  }
-  for (int i = 0; i < per_family; ++i) {  // hinge edges from 2^-1 to 2^-60 of the others
-    const int k = r.integer(1, 60);
-    Local l = random_well_shaped(r);
-    l.L0 = std::ldexp(r.uniform(1, 2), -k);
-    l.u0 = l.L0 * r.uniform(-1, 2), l.u3 = l.L0 * r.uniform(-1, 2);
-    // Beyond 2^-40 the hinge edge must sit near the origin to be representable apart from its neighbours.
-    const P3 offset = k > 40 ? P3{0, 0, 0} : random_point(r, 1);
-    add_if_valid(out, "short-hinge-edges", "2^-" + std::to_string(k),
-                 place(l.points(), {0, 0, 0}, random_rotation(r), 1, offset));
-  }
-  for (int i = 0; i < per_family; ++i) {  // |theta| from 1e-1 to 1e-15
-    const int k = r.integer(1, 15);
-    Local l = random_well_shaped(r);
-    l.set_psi(r.sign() * power_of_ten(-k) * r.uniform(1, 2));
-    add_if_valid(out, "near-flat", "1e-" + std::to_string(k), random_placement(r, l));
-  }
-  for (int i = 0; i < per_family; ++i) {  // |theta| from pi - 1e-1 to pi - 1e-15
-    const int k = r.integer(1, 15);
-    Local l = random_well_shaped(r);
-    l.u3 = r.uniform(0.3, 0.7);
-    if (std::fabs(l.u3 - l.u0) < 0.1) l.u3 = l.u0 + 0.15;
-    l.set_folded(power_of_ten(-k) * r.uniform(1, 2), r.sign());
-    add_if_valid(out, "near-folded", "pi-1e-" + std::to_string(k), random_placement(r, l));
-  }
-  for (int i = 0; i < per_family; ++i) {  // exactly folded (theta = +pi) or flat, on lattice planes, scaled
-    X12 x = lattice_hinge(i % 2 == 0);
-    const int k = r.integer(-300, 300);
-    const double o = std::ldexp(static_cast<double>(r.integer(-64, 64)), k);
-    for (double& v : x) v = std::ldexp(v, k) + o;
-    add_if_valid(out, "folded", std::string(i % 2 == 0 ? "folded" : "flat") + "-2^" + std::to_string(k), x);
-  }
-  for (int i = 0; i < per_family; ++i) {  // offsets from 1 to 1e16 times the hinge's size
-    const int k = r.integer(0, 15);
-    const Local l = random_well_shaped(r);
-    const P3 d = random_point(r, 1);
-    const double o = power_of_ten(k) * r.uniform(1, 10);
-    add_if_valid(out, "offsets", "1e" + std::to_string(k),
-                 place(l.points(), {0.5, 0, 0}, random_rotation(r), 1, {o * d[0], o * d[1], o * d[2]}));
-  }
-  for (int i = 0; i < per_family; ++i) {  // scales 2^-500 to 2^500
-    const int k = r.integer(-500, 500);
-    X12 x = random_placement(r, random_well_shaped(r));
-    for (double& v : x) v = std::ldexp(v, k);
-    add_if_valid(out, "scales", "2^" + std::to_string(k), x);
-  }
-  for (int i = 0; i < per_family; ++i) {  // a needle, offset and scaled
-    std::string tag;
-    X12 x = random_needle(r, tag);
-    const double o = power_of_ten(r.integer(0, 8));
-    const P3 d = random_point(r, 1);
-    const int k = r.integer(-300, 300);
-    for (int v = 0; v < 4; ++v)
-      for (int c = 0; c < 3; ++c) x[3 * v + c] = std::ldexp(x[3 * v + c] + o * d[c], k);
-    add_if_valid(out, "combined",
-                 tag + "-offset-1e" + std::to_string(static_cast<int>(std::log10(o))) + "-2^" + std::to_string(k), x);
-  }
-  return out;
-}
-
-std::vector<Case> deep_inputs() { return deep_ids(hard_cases(deep_seed, deep_per_family)); }
-
-std::vector<Case> hard_cases_float32(std::uint64_t seed, int per_family) {
-  std::vector<Case> out;
-  Random r(seed);
-  auto add = [&out](const std::string& family, const std::string& tag, const X12& x) {
-    if (valid_float32(x)) out.push_back({family + "/" + std::to_string(out.size()) + "-" + tag, family, x});
-  };
-  for (int i = 0; i < per_family; ++i) {  // needles: caps to 1e-12, spikes to 1e12
-    const std::string kind = needle_kinds[static_cast<std::size_t>(r.integer(0, 5))];
-    const int k = r.integer(2, 12);
-    add("needles", kind + "-1e-" + std::to_string(k), make_needle32(r, kind, k));
-  }
-  for (int i = 0; i < per_family; ++i) {  // hinge edges from 2^-1 to 2^-60 of the others
-    const int k = r.integer(1, 60);
-    add("short-hinge-edges", "2^-" + std::to_string(k), make_short_hinge_edge32(r, k));
-  }
-  for (int i = 0; i < per_family; ++i) {  // |theta| from 1e-1 to 1e-30
-    const int k = r.integer(1, 30);
-    add("near-flat", "1e-" + std::to_string(k), make_near_flat32(r, k, r.sign(), true));
-  }
-  for (int i = 0; i < per_family; ++i) {  // |theta| from pi - 1e-1 to pi - 1e-30
-    const int k = r.integer(1, 30);
-    add("near-folded", "pi-1e-" + std::to_string(k), make_near_folded32(r, k, r.sign(), true));
-  }
-  for (int i = 0; i < per_family; ++i) {  // exactly folded (theta = +pi) or flat, lattice planes, scaled
-    X12 x = lattice_hinge(i % 2 == 0);
-    const int k = r.integer(-40, 40);
-    const double o = std::ldexp(static_cast<double>(r.integer(-64, 64)), k);
-    for (double& v : x) v = std::ldexp(v, k) + o;  // at most 8 significant bits: floats
-    add("folded", std::string(i % 2 == 0 ? "folded" : "flat") + "-2^" + std::to_string(k), x);
-  }
-  for (int i = 0; i < per_family; ++i) {  // offsets from 1 to 1e6 times the hinge's size
-    const int k = r.integer(0, 5);
-    add("offsets", "1e" + std::to_string(k), make_offset32(r, power_of_ten(k) * r.uniform(1, 10)));
-  }
-  for (int i = 0; i < per_family; ++i) {  // scales 2^-50 to 2^50
-    const int k = r.integer(-50, 50);
-    add("scales", "2^" + std::to_string(k),
-        scaled_by_power_of_two(to_float(random_placement(r, random_well_shaped(r))), k));
-  }
-  for (int i = 0; i < per_family; ++i) {  // a needle (to 1e-4: rotated), offset and scaled
-    const std::string kind = needle_kinds[static_cast<std::size_t>(r.integer(0, 5))];
-    const int k = r.integer(2, 4);
-    X12 x = make_needle32(r, kind, k);
-    const int j = r.integer(0, 5 - k);  // offset 10^j: rounding moves a cap of 10^-k by under 1e-2 of it
-    const double o = power_of_ten(j);
-    const P3 d = random_point(r, 1);
-    const int e = r.integer(-40, 40);
-    for (int v = 0; v < 4; ++v)
-      for (int c = 0; c < 3; ++c) x[3 * v + c] = std::ldexp(to_float(x[3 * v + c] + o * d[c]), e);
-    add("combined", kind + "-1e-" + std::to_string(k) + "-offset-1e" + std::to_string(j) + "-2^" + std::to_string(e),
-        x);
-  }
-  return out;
-}
-
-std::vector<Case> deep_float32_inputs() { return deep_ids(hard_cases_float32(deep_seed, deep_per_family)); }
-
-std::vector<Case> float32_inputs() {
-  std::vector<Case> cases;
-  Builder32 b(cases);
-  well_shaped32(b);
-  rotations32(b);
-  scales32(b);
-  offsets32(b);
-  near_flat32(b);
-  near_folded32(b);
-  needles32(b);
-  short_hinge_edges32(b);
-  boundary_meshes32(b);
-  return cases;
-}
-
 const std::vector<std::string>& categories() {
   static const std::vector<std::string> names{"well-shaped", "rotations",         "scales",
                                               "offsets",     "near-flat",         "near-folded",
@@ -870,20 +821,25 @@ const std::vector<std::string>& categories() {
   return names;
 }
 
-std::vector<Case> inputs() {
-  std::vector<Case> cases;
-  Builder b(cases);
-  well_shaped(b);
-  rotations(b);
-  scales(b);
-  offsets(b);
-  near_flat(b);
-  near_folded(b);
-  needles(b);
-  short_hinge_edges(b);
-  boundary_meshes(b);
-  return cases;
+std::vector<Case> inputs() { return quick_set(float64_format); }
+
+std::vector<Case> float32_inputs() { return quick_set(float32_format); }
+
+const std::vector<std::string>& hard_families() {
+  static const std::vector<std::string> names{"needles", "short-hinge-edges", "near-flat", "near-folded",
+                                              "folded",  "offsets",           "scales",    "combined"};
+  return names;
 }
+
+std::vector<Case> hard_cases(std::uint64_t seed, int per_family) { return hard_set(float64_format, seed, per_family); }
+
+std::vector<Case> hard_cases_float32(std::uint64_t seed, int per_family) {
+  return hard_set(float32_format, seed, per_family);
+}
+
+std::vector<Case> deep_inputs() { return deep_ids(hard_cases(deep_seed, deep_per_family)); }
+
+std::vector<Case> deep_float32_inputs() { return deep_ids(hard_cases_float32(deep_seed, deep_per_family)); }
 
 // Two open meshes: a strip bent around a cylinder, and a hexagonal patch bulged into a cap with a
 // twist; both rest flat. Vertices are grid points, moved by correctly rounded sines and cosines.
