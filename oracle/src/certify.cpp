@@ -201,11 +201,6 @@ Uncertified flag(const std::string& name, const Interval& v, Format format) {
           round_to(mid.get(), format)};
 }
 
-bool same_angle(const ExactHinge& a, const ExactHinge& b) {
-  if (sgn(a.Y) != sgn(b.Y) || sgn(a.X) != sgn(b.X)) return false;
-  return a.X * a.X * b.nn * b.tt == b.X * b.X * a.nn * a.tt;
-}
-
 }  // namespace detail
 
 namespace {

@@ -100,4 +100,9 @@ ExactHinge exact_hinge(const ScaledHinge& x, bool with_hessian) {
   return r;
 }
 
+bool same_angle(const ExactHinge& a, const ExactHinge& b) {
+  if (sgn(a.Y) != sgn(b.Y) || sgn(a.X) != sgn(b.X)) return false;
+  return a.X * a.X * b.nn * b.tt == b.X * b.X * a.nn * a.tt;
+}
+
 }  // namespace hinge::oracle

@@ -27,9 +27,7 @@ struct Angle {
 };
 Angle angle(const ExactHinge& e, const Interval& l0);
 
-// Whether theta of `a` equals theta of `b`, decided exactly: same signs of sin (Y) and cos (X), and
-// X_a^2 nn_b tt_b == X_b^2 nn_a tt_a (equal cosines).
-bool same_angle(const ExactHinge& a, const ExactHinge& b);
+using oracle::same_angle;  // exact.hpp
 
 // The format outputs are rounded to (Options::binary32): binary64 with its whole range (subnormals
 // included, overflow to infinity), or binary32 with a 24-bit significand, its values held in doubles,

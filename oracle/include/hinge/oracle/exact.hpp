@@ -63,4 +63,8 @@ struct ExactHinge {
 ExactHinge exact_hinge(const ScaledHinge& x, bool with_hessian = true);
 ExactHinge exact_hinge(const std::array<double, 12>& x, bool with_hessian = true);
 
+// Whether theta of `a` equals theta of `b`, decided exactly: the same signs of sin (Y) and cos (X), and
+// X_a^2 nn_b tt_b == X_b^2 nn_a tt_a (equal cosines).
+bool same_angle(const ExactHinge& a, const ExactHinge& b);
+
 }  // namespace hinge::oracle
