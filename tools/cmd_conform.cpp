@@ -129,9 +129,13 @@ int run_cases(const ConformOptions& o) {
     throw Unusable(e.what());
   }
   std::optional<io::AtomicFile> saved, json, html;
-  if (!o.save.empty()) saved.emplace(o.save);
-  if (!o.json.empty()) json.emplace(o.json);
-  if (!o.report.empty()) html.emplace(o.report);
+  try {  // an output that cannot be written is a usage error, found before the candidate runs
+    if (!o.save.empty()) saved.emplace(o.save);
+    if (!o.json.empty()) json.emplace(o.json);
+    if (!o.report.empty()) html.emplace(o.report);
+  } catch (const std::runtime_error& e) {
+    throw Unusable(e.what());
+  }
 
   std::vector<conf::Expected> cases = selected_expected(o);
   std::vector<conf::CandidateResult> results;

@@ -90,7 +90,22 @@ struct Hypothesis {
   std::string key, explanation, change;
   bool forward = true;  // predicts the expected values (true) or repairs the candidate's (false)
   std::function<std::optional<Outputs>(std::size_t)> apply;
+  std::array<bool, 3> changes{true, true, true};  // the output groups it can change (theta, grad, hess)
+  // A variant of the hypothesis before it that differs from it only in these groups: tried only where one of
+  // them was given (else the two are one hypothesis, named once as the earlier).
+  std::array<bool, 3> differs{true, true, true};
 };
+
+// -theta. On the branch cut (+pi) either sign: a kernel that negates its atan2 returns -pi there, one that
+// reads the hinge in the other orientation (x1 and x2 exchanged) +pi, and both are this mismatch; `got` is
+// the candidate's theta.
+// theta on the branch cut: +pi, as the certified value holds it in double or in float.
+bool on_cut(double theta) { return theta == pi || theta == static_cast<double>(static_cast<float>(pi)); }
+
+Outputs negated_theta(Outputs o, double got) {
+  if (!on_cut(o.theta) || on_cut(-got)) o.theta = -o.theta;
+  return o;
+}
 
 const char* const kSignConvention =
     "the contract's theta has the sign of (n x nt) . e0 (lifting x0 along n makes it negative): ";
@@ -131,6 +146,7 @@ class Diagnoser {
     std::vector<const Hypothesis*> lifting;
     std::map<const Hypothesis*, std::vector<std::optional<Outputs>>> applied;
     for (const Hypothesis& h : hypotheses_) {
+      if (!any_given(h.changes) || !any_given(h.differs)) continue;
       std::vector<std::optional<Outputs>> per_case;
       bool lifts = true, changes = false;
       for (const std::size_t i : cases) {
@@ -171,7 +187,28 @@ class Diagnoser {
     return out;
   }
 
+  // Whether h, taken as the candidate's convention, makes one of `cases` (evaluated cases of a category
+  // that does not fail) fail: then it does not explain the candidate, whatever it lifts elsewhere.
+  bool breaks(const Hypothesis& h, const std::vector<std::size_t>& cases) const {
+    for (const std::size_t i : cases) {
+      const std::optional<Outputs> out = h.apply(i);
+      if (!out) return true;
+      Expected e = expected_[i];
+      CandidateResult r = results_[i];
+      if (h.forward) set(e.values, *out);
+      else set(r, *out);
+      if (compare(e, r, grading_).tier == Tier::fail) return true;
+    }
+    return false;
+  }
+
  private:
+  bool any_given(const std::array<bool, 3>& groups) const {
+    for (int g = 0; g < 3; ++g)
+      if (groups[g] && grading_.given[g]) return true;
+    return false;
+  }
+
   static void set(CertifiedTheta& v, const Outputs& o) {
     v.theta = o.theta;
     v.grad = o.grad;
@@ -204,10 +241,25 @@ class Diagnoser {
     return true;
   }
 
+  // The groups the last hypothesis added can change, and where it differs from the one before it.
+  void masks(std::array<bool, 3> changes, std::array<bool, 3> differs = {true, true, true}) {
+    hypotheses_.back().changes = changes;
+    hypotheses_.back().differs = differs;
+  }
+
+  // `predict` maps the certified outputs (and the candidate's theta, where a prediction may go either way)
+  // to what a kernel with that convention returns.
   void add_forward(std::string key, std::string explanation, std::string change,
                    std::function<std::optional<Outputs>(const Outputs&)> predict) {
-    hypotheses_.push_back({std::move(key), std::move(explanation), std::move(change), true,
-                           [this, predict](std::size_t i) { return predict(outputs_of(expected_[i].values)); }});
+    add_forward(std::move(key), std::move(explanation), std::move(change),
+                [predict](const Outputs& e, double) { return predict(e); });
+  }
+  void add_forward(std::string key, std::string explanation, std::string change,
+                   std::function<std::optional<Outputs>(const Outputs&, double)> predict) {
+    hypotheses_.push_back(
+        {std::move(key), std::move(explanation), std::move(change), true, [this, predict](std::size_t i) {
+           return predict(outputs_of(expected_[i].values), rounded_to(grading_.dtype, results_[i]).theta);
+         }});
   }
   // Repairs in the candidate's own order.
   void add_inverse(std::string key, std::string explanation, std::string change,
@@ -256,15 +308,17 @@ class Diagnoser {
     }();
     add_forward("theta-negated", "theta negated (the same as the stencil " + swap12 + ")",
                 std::string(kSignConvention) + "negate theta and its derivatives",
-                [](const Outputs& e) { return scaled(e, -1, -1, -1); });
+                [](const Outputs& e, double got) { return negated_theta(scaled(e, 1, -1, -1), got); });
     add_forward(
         "theta-only-negated", "theta negated, its derivatives not",
         std::string(kSignConvention) + "negate theta (its gradient and Hessian already have the contract's sign)",
-        [](const Outputs& e) { return scaled(e, -1, 1, 1); });
+        [](const Outputs& e, double got) { return negated_theta(e, got); });
+    masks({true, false, false}, {false, true, true});
     add_forward("degrees", "theta in degrees", "return radians: multiply theta and its derivatives by pi/180",
                 [=](const Outputs& e) { return scaled(e, degrees, degrees, degrees); });
     add_forward("theta-degrees", "theta in degrees (its derivatives in radians)", "return theta in radians",
                 [=](const Outputs& e) { return scaled(e, degrees, 1, 1); });
+    masks({true, false, false}, {false, true, true});
     add_forward("unsigned", "the unsigned angle |theta| (an acos of n . nt)",
                 std::string("the contract's theta is signed: ") + kAtan2, [](const Outputs& e) {
                   const double s = e.theta < 0 ? -1 : 1;
@@ -284,18 +338,22 @@ class Diagnoser {
                   if (o.theta < 0) o.theta += 2 * pi;
                   return o;
                 });
+    masks({true, false, false});
     add_forward("branch-cut", "-pi on the branch cut",
                 "a hinge folded flat onto itself has theta = +pi, never -pi (mind atan2(-0.0, x) for x < 0)",
                 [](const Outputs& e) {
                   Outputs o = e;
-                  if (o.theta == pi) o.theta = -pi;
+                  if (on_cut(o.theta)) o.theta = -o.theta;
                   return o;
                 });
+    masks({true, false, false});
     add_forward("gradient-negated", "the gradient negated (a force)", "return d theta / dx; the force is its negative",
                 [](const Outputs& e) { return scaled(e, 1, -1, 1); });
+    masks({false, true, false});
     add_forward("derivatives-negated", "the gradient and Hessian negated (a force and its Jacobian)",
                 "return the derivatives of theta; the force and its Jacobian are their negatives",
                 [](const Outputs& e) { return scaled(e, 1, -1, -1); });
+    masks({false, true, true}, {false, false, true});
     add_inverse("hessian-upper-only",
                 "a Hessian with only its upper matrix triangle right (the lower one missing or wrong)",
                 "fill the whole 12 x 12 Hessian: it is symmetric, H[j][i] = H[i][j]", [](Outputs c) {
@@ -303,6 +361,7 @@ class Diagnoser {
                     for (int j = 0; j < i; ++j) c.hess[12 * i + j] = c.hess[12 * j + i];
                   return c;
                 });
+    masks({false, false, true});
     add_inverse("hessian-lower-only",
                 "a Hessian with only its lower matrix triangle right (the upper one missing or wrong)",
                 "fill the whole 12 x 12 Hessian: it is symmetric, H[i][j] = H[j][i]", [](Outputs c) {
@@ -310,6 +369,7 @@ class Diagnoser {
                     for (int j = i + 1; j < 12; ++j) c.hess[12 * i + j] = c.hess[12 * j + i];
                   return c;
                 });
+    masks({false, false, true});
     add_inverse("coordinate-major",
                 "coordinate-major variables (x0.x, x1.x, x2.x, x3.x, x0.y, ...) instead of vertex-major",
                 "order the gradient and Hessian vertex by vertex: x0.x, x0.y, x0.z, x1.x, ...", [](const Outputs& c) {
@@ -321,6 +381,7 @@ class Diagnoser {
                     for (int l = 0; l < 12; ++l) o.hess[12 * vertex_major(k) + vertex_major(l)] = c.hess[12 * k + l];
                   return o;
                 });
+    masks({false, true, true});
     // The ten order hypotheses: per permutation pi with pi(1) < pi(2) (one of each pair pi, pi o (12)(03)),
     // hinge edge other than {1, 2}; the candidate's true order s' = pi^-1 o s.
     const auto true_order = [&](const std::array<int, 4>& p) {
@@ -343,8 +404,13 @@ class Diagnoser {
                   "declare stencil=" + label_tuple(order, true) +
                       " (the kernel's vertex j is that label), or reorder the kernel to the contract's hinge: edge "
                       "x1 -> x2, upper triangle (x0, x1, x2), lower (x3, x2, x1)",
-                  {});
-      hypotheses_.back().apply = [this, perm](std::size_t i) { return permuted(i, perm); };
+                  std::function<std::optional<Outputs>(const Outputs&)>{});  // apply set below
+      hypotheses_.back().apply = [this, perm](std::size_t i) {
+        // The order's class includes its orders with theta negated: on the branch cut either sign of pi.
+        std::optional<Outputs> o = permuted(i, perm);
+        if (o && on_cut(o->theta) && on_cut(-rounded_to(grading_.dtype, results_[i]).theta)) o->theta = -o->theta;
+        return o;
+      };
     } while (std::next_permutation(perm.begin(), perm.end()));
   }
 
@@ -375,24 +441,53 @@ std::vector<Finding> diagnose(const std::vector<Expected>& expected, const std::
     failing[o.category] = failing[o.category] || (ok && o.tier == Tier::fail);
     if (ok) evaluated[o.category].push_back(i);
   }
-  std::vector<Finding> findings;
+  // Per failing category, its explanations (groups of equivalent hypotheses). Missing and non-finite cases
+  // fail whatever the convention: the mismatches are judged on the others, and only where one of those fails.
+  using Group = std::pair<const Hypothesis*, std::vector<const Hypothesis*>>;
+  std::vector<std::pair<std::string, std::vector<Group>>> explained;
+  std::map<std::string, int> lifted;  // per hypothesis, the categories it lifts
   for (const std::string& category : order) {
-    // Missing and non-finite cases fail whatever the convention: the mismatches are judged on the others,
-    // and only where one of those fails.
     if (!failing[category]) continue;
-    for (const auto& [h, equivalents] : diagnoser.explain(evaluated[category])) {
-      auto it = std::find_if(findings.begin(), findings.end(), [&](const Finding& f) { return f.key == h->key; });
+    explained.push_back({category, diagnoser.explain(evaluated[category])});
+    for (const auto& [first, others] : explained.back().second) {
+      ++lifted[first->key];
+      for (const Hypothesis* h : others) ++lifted[h->key];
+    }
+  }
+  // A convention that makes a category fail which does not fail now is not the candidate's.
+  std::map<std::string, bool> consistent;
+  const auto holds = [&](const Hypothesis* h) {
+    const auto [it, inserted] = consistent.try_emplace(h->key, true);
+    if (inserted)
+      for (const std::string& category : order)
+        if (!failing[category] && diagnoser.breaks(*h, evaluated[category])) it->second = false;
+    return it->second;
+  };
+  std::vector<Finding> findings;
+  for (const auto& [category, groups] : explained)
+    for (const auto& [first, others] : groups) {
+      // Among equivalent explanations the one that explains the most categories, then the simplest.
+      std::vector<const Hypothesis*> members{first};
+      members.insert(members.end(), others.begin(), others.end());
+      std::vector<const Hypothesis*> candidates;
+      for (const Hypothesis* h : members)
+        if (holds(h)) candidates.push_back(h);
+      if (candidates.empty()) continue;
+      const Hypothesis* chosen =
+          *std::max_element(candidates.begin(), candidates.end(),
+                            [&](const Hypothesis* a, const Hypothesis* b) { return lifted[a->key] < lifted[b->key]; });
+      auto it = std::find_if(findings.begin(), findings.end(), [&](const Finding& f) { return f.key == chosen->key; });
       if (it == findings.end()) {
-        Finding f{h->key, h->explanation, h->change, {}, {}};
-        for (std::size_t k = 0; k < equivalents.size(); ++k)
-          f.explanation += (k ? "; " : " (on these cases also: ") + equivalents[k]->explanation;
-        if (!equivalents.empty()) f.explanation += ")";
+        Finding f{chosen->key, chosen->explanation, chosen->change, {}, {}};
+        std::string also;
+        for (const Hypothesis* h : candidates)
+          if (h != chosen) also += (also.empty() ? "" : "; ") + h->explanation;
+        if (!also.empty()) f.explanation += " (on these cases also: " + also + ")";
         findings.push_back(std::move(f));
         it = findings.end() - 1;
       }
       it->categories.push_back(category);
     }
-  }
   for (Finding& f : findings) {
     std::string list;
     for (std::size_t k = 0; k < f.categories.size(); ++k) list += (k ? ", " : "") + f.categories[k];

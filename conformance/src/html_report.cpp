@@ -216,6 +216,11 @@ void header(std::ostream& out, const Report& r) {
 }
 
 void diagnosis(std::ostream& out, const Report& r) {
+  if (!r.notes.empty()) {
+    out << "<ul class=\"notes\">\n";
+    for (const std::string& note : r.notes) out << "<li>" << escape(note) << "</li>\n";
+    out << "</ul>\n";
+  }
   if (r.diagnosis.empty()) return;
   out << "<section class=\"diagnosis\" id=\"diagnosis\"><h2>Diagnosis</h2><ul>\n";
   for (const Finding& f : r.diagnosis) out << "<li>" << escape(f.sentence) << "</li>\n";

@@ -104,7 +104,23 @@ Report make_report(std::string candidate, std::vector<Expected> expected, std::v
   r.stencil = stencil;
   r.expected = std::move(expected);
   r.results.reserve(results.size());
-  for (CandidateResult& c : results) r.results.push_back(rounded_to(grading.dtype, std::move(c)));
+  for (CandidateResult& c : results) {
+    CandidateResult rounded = rounded_to(grading.dtype, std::move(c));
+    if (grading.dtype == Dtype::float32 && rounded.status == CandidateResult::Status::ok) {
+      bool finite = true;  // a finite value that overflows float when rounded to it
+      const auto check = [&](const double* v, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) finite = finite && std::isfinite(v[i]);
+      };
+      if (grading.given[0]) check(&rounded.theta, 1);
+      if (grading.given[1]) check(rounded.grad.data(), 12);
+      if (grading.given[2]) check(rounded.hess.data(), 144);
+      if (!finite) {
+        rounded.status = CandidateResult::Status::nonfinite;
+        rounded.error = "an output overflows float32";
+      }
+    }
+    r.results.push_back(std::move(rounded));
+  }
   for (std::size_t i = 0; i < r.expected.size(); ++i)
     r.outcomes.push_back(compare(r.expected[i], r.results[i], grading));
   r.categories = summarize(r.outcomes);
@@ -163,6 +179,7 @@ void print_report(std::ostream& out, const Report& report) {
         << entry_name(o.group, o.entry) << ": expected " << exact(o.expected_value) << ", got "
         << exact(o.candidate_value) << '\n';
   }
+  for (const std::string& note : report.notes) out << "note: " << note << '\n';
   if (!report.diagnosis.empty()) {
     out << "\ndiagnosis (docs/conformance.md, \"Diagnosis\"):\n";
     for (const Finding& f : report.diagnosis) out << "- " << f.sentence << '\n';
@@ -230,6 +247,7 @@ void write_json_report(std::ostream& out, const Report& report) {
   }
   j["pass"] = report.passed;
   j["tier"] = tier_name(report.tier);
+  j["notes"] = report.notes;
   j["diagnosis"] = nlohmann::json::array();
   for (const Finding& f : report.diagnosis) j["diagnosis"].push_back(f.sentence);
   j["findings"] = nlohmann::json::array();

@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -22,9 +23,16 @@ EvalOutput parse_result(const nlohmann::json& j) {
     r.error = e->is_string() ? e->get<std::string>() : e->dump();
     return r;
   }
-  auto number = [&r](const nlohmann::json& v, double& out) {
-    if (v.is_number()) out = v.get<double>();
-    else r.status = Status::nonfinite;  // null, "NaN", ...
+  // A number, or what a candidate's JSON writer makes of a NaN or an infinity: null (nlohmann, JavaScript)
+  // and "NaN" are NaN; "Infinity", "-Infinity", "inf", "-inf" infinities; anything else NaN.
+  auto number = [](const nlohmann::json& v, double& out) {
+    if (v.is_number()) {
+      out = v.get<double>();
+      return;
+    }
+    const std::string text = v.is_string() ? v.get<std::string>() : "";
+    const bool infinite = text == "Infinity" || text == "inf" || text == "-Infinity" || text == "-inf";
+    out = !infinite ? std::numeric_limits<double>::quiet_NaN() : text[0] == '-' ? -HUGE_VAL : HUGE_VAL;
   };
   auto array = [&](const char* name, double* out, std::size_t n) {
     auto a = j.find(name);
@@ -75,10 +83,16 @@ std::optional<std::string> quoted_id(const std::string& text) {
 
 void check_finite(EvalOutput& r) {
   if (r.status != Status::ok) return;
-  bool finite = std::isfinite(r.theta);
-  for (double v : r.grad) finite = finite && std::isfinite(v);
-  for (double v : r.hess) finite = finite && std::isfinite(v);
-  if (!finite) r.status = Status::nonfinite;
+  bool nan = std::isnan(r.theta), finite = std::isfinite(r.theta);
+  for (double v : r.grad) nan = nan || std::isnan(v), finite = finite && std::isfinite(v);
+  for (double v : r.hess) nan = nan || std::isnan(v), finite = finite && std::isfinite(v);
+  if (nan) {
+    r.status = Status::missing;
+    r.error = "a NaN in the outputs";
+  } else if (!finite) {
+    r.status = Status::nonfinite;
+    r.error = "an infinity in the outputs";
+  }
 }
 
 std::map<std::string, EvalOutput> read_eval_outputs(std::istream& in, const std::string& name) {
@@ -105,7 +119,11 @@ std::map<std::string, EvalOutput> read_eval_outputs(std::istream& in, const std:
       }
       if (!parsed) throw InputError(name + ":" + std::to_string(number) + ": not valid JSON, and no \"id\" found");
       id = *parsed;
-      r.status = Status::nonfinite;
+      // Not JSON: a NaN or an infinity written as a bare token, as many writers do. A NaN makes the result
+      // not evaluated (missing), an infinity alone non-finite.
+      const bool nan = text.find("NaN") != std::string::npos || text.find("nan") != std::string::npos;
+      r.status = nan ? Status::missing : Status::nonfinite;
+      r.error = nan ? "a NaN in the outputs" : "an infinity in the outputs";
     }
     results.emplace(id, std::move(r));  // the first line of an id counts
   }

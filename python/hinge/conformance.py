@@ -6,6 +6,7 @@ values with the tolerance policy of ``hinge conform`` (the same grading, tiers, 
 this module only calls the candidate and converts its arrays).
 """
 
+import math
 import time
 
 import numpy as np
@@ -21,7 +22,7 @@ _MISSING, _ERROR, _NONFINITE, _OK = 0, 1, 2, 3  # io::EvalOutput::Status
 
 
 class Report:
-    """The graded run: ``passed``, ``tier``, ``categories``, ``diagnosis``, ``to_json()``, ``to_html(path)``,
+    """The graded run: ``passed``, ``tier``, ``categories``, ``diagnosis``, ``notes``, ``to_json()``, ``to_html(path)``,
     ``str(report)`` (the text report of ``hinge conform``), and the time taken: ``candidate_seconds``
     (inside ``fn``) and ``kit_seconds`` (the rest)."""
 
@@ -31,14 +32,19 @@ class Report:
         self._compiled = compiled
         self._json = compiled.json()
         parsed = json.loads(self._json)
+        given = set(parsed["given"])
         self.passed = bool(compiled.passed)
         self.tier = compiled.tier
         self.diagnosis = list(compiled.diagnosis)
+        self.notes = list(parsed["notes"])
         self.categories = {}
         for c in parsed["categories"]:
             entry = {"cases": c["cases"], "missing": c["missing"], "nonfinite": c["nonfinite"], "tier": c["tier"]}
-            for group in OUTPUTS:
-                entry[group] = {"median": c["median"][group], "max": c["worst"][group]}
+            for group in OUTPUTS:  # JSON's null: infinite (a missing result) for a group given, else not checked
+                entry[group] = {
+                    key: (math.inf if value is None else value) if group in given else None
+                    for key, value in (("median", c["median"][group]), ("max", c["worst"][group]))
+                }
             entry["worst_case"] = c["worst_case_detail"]
             self.categories[c["category"]] = entry
         self.candidate_seconds = candidate_seconds
@@ -60,7 +66,7 @@ class Report:
 
 
 def _stencil_indices(stencil):
-    if isinstance(stencil, str) or not hasattr(stencil, "__iter__"):
+    if not isinstance(stencil, (tuple, list)):
         raise ValueError(f"stencil= must be a sequence of the four labels x0, x1, x2, x3; got {stencil!r}")
     labels = list(stencil)
     for label in labels:
@@ -90,7 +96,7 @@ def _outputs(outputs):
 
 def _dtype(dtype):
     try:
-        name = np.dtype(dtype).name
+        name = None if dtype is None else np.dtype(dtype).name
     except TypeError:
         name = None
     if name not in ("float64", "float32"):
@@ -99,7 +105,7 @@ def _dtype(dtype):
 
 
 def _choice(value, name, choices):
-    if value not in choices:
+    if not isinstance(value, str) or value not in choices:
         raise ValueError(f"{name}= must be one of {', '.join(repr(c) for c in choices)}; got {value!r}")
     return value
 
@@ -135,10 +141,10 @@ def _unpack(result, names, rows, batched):
         if len(result) != len(names):
             raise ValueError(f"fn returned {len(result)} values; expected {len(names)}, in the order of outputs={names!r}")
         values = list(result)
-    elif len(names) == 1 and not isinstance(result, (tuple, list)):
-        values = [result]
-    elif len(names) == 1 and len(result) == 1 and isinstance(result, tuple):
+    elif len(names) == 1 and isinstance(result, tuple) and len(result) == 1:
         values = list(result)
+    elif len(names) == 1:  # the one output itself: an array, a list, anything numpy.asarray takes
+        values = [result]
     else:
         raise ValueError(f"fn must return a dict keyed by {names!r} or a tuple in that order; got {type(result).__name__}")
     return {n: _as_output(v, n, rows, batched) for n, v in zip(names, values)}
@@ -194,6 +200,7 @@ def conform(
     status = np.full(n, _OK, dtype=np.int64)
     errors = [""] * n
     candidate_seconds = 0.0
+    notes = []
 
     def call(rows_x):
         nonlocal candidate_seconds
@@ -219,8 +226,13 @@ def conform(
     if batch:
         try:
             result = call(x_candidate.copy())
-        except Exception:  # noqa: BLE001 (retried hinge by hinge to name the hinges that raise)
+        except Exception as e:  # noqa: BLE001 (retried hinge by hinge to name the hinges that raise)
             one_by_one((1, 12))
+            raised = int(np.count_nonzero(status == _MISSING))
+            notes.append(
+                f"the batch call (n = {n}) raised: {_describe(e)[len('fn raised '):]}; retried one hinge at a time, "
+                + (f"{raised} hinge(s) raised" if raised else "no hinge raised alone: the failure is the batch's")
+            )
         else:
             store(slice(None), _unpack(result, names, n, True))
     else:
@@ -251,6 +263,7 @@ def conform(
         hess.reshape(n, 144),
         status.tolist(),
         errors,
+        notes,
     )
     total = time.perf_counter() - start
     return Report(compiled, candidate_seconds, total - candidate_seconds)

@@ -46,7 +46,7 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 conf::Report grade(const std::string& candidate, const std::string& dtype, const std::string& depth,
                    const std::array<bool, 3>& given, const conf::Stencil& stencil, const Array& theta,
                    const Array& grad, const Array& hess, const std::vector<int>& status,
-                   const std::vector<std::string>& errors) {
+                   const std::vector<std::string>& errors, const std::vector<std::string>& notes) {
   conf::Grading grading;
   grading.dtype = parsed([&] { return conf::parse_dtype(dtype); });
   grading.given = given;
@@ -67,7 +67,9 @@ conf::Report grade(const std::string& candidate, const std::string& dtype, const
     std::copy_n(hess.data() + 144 * i, 144, r.hess.begin());
   }
   py::gil_scoped_release release;
-  return conf::make_report(candidate, std::move(expected), std::move(results), grading, stencil, depth);
+  conf::Report report = conf::make_report(candidate, std::move(expected), std::move(results), grading, stencil, depth);
+  report.notes = notes;
+  return report;
 }
 
 }  // namespace
@@ -109,7 +111,7 @@ void bind_conformance(py::module_& m) {
           "path"_a);
   m.def("conformance_set", &conformance_set, "dtype"_a, "depth"_a);
   m.def("conformance_grade", &grade, "candidate"_a, "dtype"_a, "depth"_a, "given"_a, "stencil"_a, "theta"_a, "grad"_a,
-        "hess"_a, "status"_a, "errors"_a);
+        "hess"_a, "status"_a, "errors"_a, "notes"_a = std::vector<std::string>{});
 }
 
 }  // namespace hinge::python

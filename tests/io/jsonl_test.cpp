@@ -870,8 +870,9 @@ TEST(EvalOutputRead, ALineWithoutAReadableIdNamesTheFileAndLine) {
   EXPECT_TRUE(contains(read_results_error("{\"theta\": 1}\n"), "c.jsonl:1: "));
 }
 
-TEST(EvalOutputRead, ALineThatIsNotJsonButHasAnIdCountsAsNonFinite) {
-  // eval_output.hpp: "a line that is not JSON but whose "id" can be found counts as non-finite".
+TEST(EvalOutputRead, ALineThatIsNotJsonButHasAnIdIsMissingWithANaNAndNonFiniteOtherwise) {
+  // eval_output.hpp: a line that is not JSON but whose "id" can be found counts as missing if it has a NaN
+  // token, else as non-finite.
   std::string hess = "[";
   for (int k = 0; k < 144; ++k) hess += (k ? ", " : "") + std::string(k == 7 ? "NaN" : "0.0");
   hess += "]";
@@ -881,10 +882,11 @@ TEST(EvalOutputRead, ALineThatIsNotJsonButHasAnIdCountsAsNonFinite) {
       "{\"id\": \"n3\", \"theta\": 1, \"grad\": [0,0,0,0,0,0,0,0,0,0,0,0], \"hess\": " +
       hess + "}\n");
   ASSERT_EQ(results.size(), 3u);
-  for (const char* id : {"n1", "n2", "n3"}) EXPECT_EQ(results.at(id).status, Status::nonfinite) << id;
+  for (const char* id : {"n1", "n3"}) EXPECT_EQ(results.at(id).status, Status::missing) << id;
+  EXPECT_EQ(results.at("n2").status, Status::nonfinite);
 }
 
-TEST(EvalOutputRead, NullNumbersAreNonFiniteAndMissingArraysMissing) {
+TEST(EvalOutputRead, NullAndNaNNumbersAreMissingInfinitiesNonFiniteAndMissingArraysMissing) {
   RoundedTheta r;
   Json with_null = Json::parse(io::result_line("\"null-grad\"", r));
   with_null["grad"][4] = nullptr;
@@ -894,15 +896,18 @@ TEST(EvalOutputRead, NullNumbersAreNonFiniteAndMissingArraysMissing) {
   no_theta.erase("theta");
   Json string_theta = Json::parse(io::result_line("\"string-theta\"", r));
   string_theta["theta"] = "NaN";
+  Json infinite_theta = Json::parse(io::result_line("\"infinite-theta\"", r));
+  infinite_theta["theta"] = "-Infinity";
   const auto results = read_results(with_null.dump() + "\n" + short_hess.dump() + "\n" + no_theta.dump() + "\n" +
-                                    string_theta.dump() + "\n");
-  ASSERT_EQ(results.size(), 4u);
-  EXPECT_EQ(results.at("null-grad").status, Status::nonfinite);
+                                    string_theta.dump() + "\n" + infinite_theta.dump() + "\n");
+  ASSERT_EQ(results.size(), 5u);
+  EXPECT_EQ(results.at("null-grad").status, Status::missing);
+  EXPECT_EQ(results.at("infinite-theta").status, Status::nonfinite);
   EXPECT_EQ(results.at("short-hess").status, Status::missing);
   EXPECT_FALSE(results.at("short-hess").error.empty());
   EXPECT_EQ(results.at("no-theta").status, Status::missing);
   EXPECT_FALSE(results.at("no-theta").error.empty());
-  EXPECT_EQ(results.at("string-theta").status, Status::nonfinite);
+  EXPECT_EQ(results.at("string-theta").status, Status::missing);
 }
 
 TEST(EvalOutputRead, TheFirstLineOfAnIdCounts) {
@@ -913,14 +918,15 @@ TEST(EvalOutputRead, TheFirstLineOfAnIdCounts) {
   EXPECT_EQ(results.at("dup").theta, 1.0);
 }
 
-TEST(EvalOutputRead, CheckFiniteMarksAResultWithANaNOrAnInfinity) {
+TEST(EvalOutputRead, CheckFiniteMarksAResultWithANaNMissingAndOneWithOnlyAnInfinityNonFinite) {
   for (int where = 0; where < 3; ++where) {
     for (double bad : {std::numeric_limits<double>::quiet_NaN(), HUGE_VAL, -HUGE_VAL}) {
       io::EvalOutput r;
       r.status = Status::ok;
       (where == 0 ? r.theta : where == 1 ? r.grad[11] : r.hess[143]) = bad;
+      r.grad[0] = where == 0 ? HUGE_VAL : 0.0;  // an infinity beside a NaN: still not evaluated
       io::check_finite(r);
-      EXPECT_EQ(r.status, Status::nonfinite) << where << " " << bad;
+      EXPECT_EQ(r.status, std::isnan(bad) ? Status::missing : Status::nonfinite) << where << " " << bad;
     }
   }
   io::EvalOutput fine;

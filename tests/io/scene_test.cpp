@@ -1,6 +1,7 @@
 // Scene files are read strictly: a key the format does not know, anywhere, or a bad value is an error
 // naming the file and the key (the contract's "hinge simulate and scene files").
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -12,9 +13,12 @@
 namespace hinge::io {
 namespace {
 
-// A scene file written into a fresh folder under the system's temporary directory.
+// A scene file written into a fresh folder under the system's temporary directory, one per process and
+// test (ctest runs this file's tests side by side, each in its own process).
 std::filesystem::path write_scene(const std::string& name, const std::string& json) {
-  const auto dir = std::filesystem::temp_directory_path() / ("hinge-io-scene-test-" + name);
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("hinge-io-scene-test-" + std::to_string(::getpid()) + "-" + test + "-" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "scene.json") << json;

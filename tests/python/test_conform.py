@@ -321,3 +321,87 @@ def test_a_wrong_output_is_a_value_error_naming_the_output_and_the_shape_expecte
 def test_theta_alone_negated_is_told_apart_from_a_negated_convention():
     report = hinge.conform(transformed(lambda t, g, h: (-t, g, h)))
     assert named(report, r"theta negated, its derivatives not") and not named(report, r"the same as the stencil")
+
+
+def test_a_batch_that_raises_while_every_hinge_passes_alone_is_noted():
+    base = certified()
+
+    def kernel(X):
+        if len(X) > 100:
+            raise RuntimeError("out of GPU memory")
+        return base(X)
+
+    report = hinge.conform(kernel)
+    assert report.passed  # every hinge alone is right
+    assert len(report.notes) == 1 and "out of GPU memory" in report.notes[0] and "no hinge raised alone" in report.notes[0]
+    assert "note: the batch call" in str(report)
+
+
+def test_a_list_is_accepted_as_the_single_output():
+    base = certified()
+    report = hinge.conform(lambda X: list(base(X)["theta"]), outputs=("theta",))
+    assert report.tier == "correctly-rounded"
+
+
+def test_a_missing_case_makes_its_groups_worst_error_infinite_and_a_group_not_given_none():
+    base = certified()
+
+    def kernel(X):
+        out = base(X)
+        out["theta"][0] = np.nan
+        return out["theta"], out["grad"]
+
+    first = next(iter(hinge.conform(kernel, outputs=("theta", "grad")).categories.values()))
+    assert first["theta"]["max"] == math.inf and first["grad"]["max"] == math.inf and first["hess"]["max"] is None
+
+
+def test_a_float_overflow_in_a_float32_run_is_non_finite():
+    base = certified()
+
+    def kernel(X):
+        out = base(X.astype(np.float64))
+        out["theta"][0] = 1e300  # finite in double, infinite in float
+        return out
+
+    first = next(iter(hinge.conform(kernel, dtype="float32").categories.values()))
+    assert first["nonfinite"] == 1 and first["missing"] == 0
+
+
+def test_the_negated_angle_of_a_real_kernel_is_named_in_every_category_including_the_folded_ones():
+    # A kernel in the order (x0, x2, x1, x3): its theta is the contract's negated, but +pi stays +pi on the
+    # branch cut (any order gives +pi there), so "theta negated" must keep +pi at the cut.
+    def reversed_edge(X):
+        out = certified(("x0", "x2", "x1", "x3"))(X)
+        return out["theta"], out["grad"], out["hess"]
+
+    report = hinge.conform(reversed_edge, depth="deep")
+    found = named(report, r"theta negated \(the same as the stencil \(x0, x2, x1, x3\)\)")
+    failing = [c for c, v in report.categories.items() if v["tier"] == "fail"]
+    assert len(found) == 1 and all(c in found[0] for c in failing), report.diagnosis
+
+
+def test_a_theta_only_kernel_with_zero_on_the_cut_gets_no_vertex_order_advice():
+    def zero_on_cut(X):
+        t = certified()(X)["theta"]
+        return np.where(t == math.pi, 0.0, t)
+
+    report = hinge.conform(zero_on_cut, outputs=("theta",), depth="deep")
+    assert not named(report, r"vertex order"), report.diagnosis
+
+
+def test_with_theta_alone_a_variant_differing_only_in_the_derivatives_is_not_named_again():
+    report = hinge.conform(lambda X: -certified()(X)["theta"], outputs=("theta",))
+    assert not named(report, r"its derivatives not") and named(report, r"theta negated")
+
+
+@pytest.mark.parametrize(
+    "options, message",
+    [
+        ({"dtype": None}, r"dtype= must be"),
+        ({"stencil": {"x0": 0, "x1": 1, "x2": 2, "x3": 3}}, r"stencil= must be a sequence"),
+        ({"depth": np.array(["quick"])}, r"depth= must be one of"),
+    ],
+)
+def test_more_bad_arguments_are_value_errors(options, message):
+    with pytest.raises(ValueError, match=message):
+        hinge.conform(certified(), **options)

@@ -38,6 +38,7 @@ struct Report {
   std::vector<CaseOutcome> outcomes;     // index-aligned with expected and results
   std::vector<CategorySummary> categories;
   std::vector<Finding> diagnosis;
+  std::vector<std::string> notes;  // what else the reader should know ("the batch call raised ...")
   bool passed = false;
   Tier tier = Tier::fail;  // the lowest category tier
 };

@@ -22,11 +22,13 @@ struct EvalOutput {
   std::array<double, 144> hess{};  // row-major
 };
 
-// Sets r.status to nonfinite when r is ok but holds a NaN or an infinity.
+// When r is ok: missing ("a NaN in the outputs": not evaluated) when it holds a NaN, else nonfinite when it
+// holds an infinity (docs/contract.md, "Conformance from Python": the same rule on every route).
 void check_finite(EvalOutput& r);
 
 // The results of a file by id (the first line of an id counts); a line that is not JSON but whose "id" can
-// be found counts as non-finite (a "NaN" in it, say). Throws hinge::InputError "FILE:LINE: why" when a
+// be found counts as missing if it has a NaN token in it, else as non-finite (an "Infinity" token); null
+// and "NaN" for a number are NaN, "Infinity" an infinity. Throws hinge::InputError "FILE:LINE: why" when a
 // line has no readable id, or the file cannot be read.
 std::map<std::string, EvalOutput> read_eval_outputs(const std::string& path);
 std::map<std::string, EvalOutput> read_eval_outputs(std::istream& in, const std::string& name_for_errors);
