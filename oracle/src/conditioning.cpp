@@ -2,8 +2,10 @@
 // values: the same bits on every platform (the project compiles without contraction).
 #include "hinge/oracle/conditioning.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "hinge_energy.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"
 
@@ -62,7 +64,81 @@ double third_derivative_scale(const ScaledHinge& s, const Int& longest_squared, 
   return mpfr_get_d(sum.get(), MPFR_RNDN);
 }
 
+// Each of a hinge's 24 coordinates (X's, then R's) perturbed by +-1 unit of the refined integers: the
+// central differences of psi, its gradient and Hessian, summed in squares per output group.
+class EnergyDifferences {
+ public:
+  EnergyDifferences(const ScaledHinge& x, const ScaledHinge& rest, const EnergyParameters& p, bool gauss_newton)
+      : x_(x), rest_(rest), p_(p), gauss_newton_(gauss_newton) {}
+
+  // sum over the coordinates of side `which` (0: X, 1: R), refined by `extra` bits, of the squared
+  // derivatives of each output group, added to `sums`.
+  void add(int which, unsigned long extra, std::array<Real, 3>& sums) const {
+    const ScaledHinge refined = refine(which == 0 ? x_ : rest_, extra);
+    Real term(320);
+    for (int j = 0; j < 12; ++j) {
+      ScaledHinge plus = refined, minus = refined;
+      plus.X[j] += 1;
+      minus.X[j] -= 1;
+      const detail::HingeEnergy ep = evaluate(which, plus), em = evaluate(which, minus);
+      const auto add_square = [&](const Interval& a, const Interval& b, Real& sum) {
+        const Interval d = a - b;
+        mpfi_mid(term.get(), d.get());
+        mpfr_mul_2si(term.get(), term.get(), refined.F - 1, MPFR_RNDN);  // / (2 step), step = 2^-F
+        mpfr_sqr(term.get(), term.get(), MPFR_RNDN);
+        mpfr_add(sum.get(), sum.get(), term.get(), MPFR_RNDN);
+      };
+      add_square(ep.value, em.value, sums[0]);
+      for (int k = 0; k < 12; ++k) add_square(ep.grad[k], em.grad[k], sums[1]);
+      for (int k = 0; k < 144; ++k) add_square(ep.hess[k], em.hess[k], sums[2]);
+    }
+  }
+
+ private:
+  detail::HingeEnergy evaluate(int which, const ScaledHinge& perturbed) const {
+    const ExactHinge deformed = exact_hinge(which == 0 ? perturbed : x_, true);
+    const ExactHinge rest = exact_hinge(which == 1 ? perturbed : rest_, false);
+    return detail::hinge_energy(p_.model, Interval(p_.k), Interval(p_.k_d_over_dt), deformed, rest,
+                                same_angle(deformed, rest), true, true, gauss_newton_);
+  }
+
+  const ScaledHinge &x_, &rest_;
+  const EnergyParameters& p_;
+  bool gauss_newton_;
+};
+
+// The refinement that makes one unit of h's integers at most 2^-100 of its longest edge.
+unsigned long refinement(const Int& longest_squared) {
+  const std::size_t length_bits = (mpz_sizeinbase(longest_squared.get_mpz_t(), 2) + 1) / 2;
+  return length_bits >= 100 ? 0 : 100 - length_bits;
+}
+
 }  // namespace
+
+Conditioning energy_conditioning(const std::array<double, 12>& x, const std::array<double, 12>& rest,
+                                 const EnergyParameters& parameters, bool gauss_newton, double energy,
+                                 const std::array<double, 12>& grad, const std::array<double, 144>& hess) {
+  const ScaledHinge sx = scale_exactly(x), sr = scale_exactly(rest);
+  const ExactHinge r = exact_hinge(sr, false);
+  if (infinite_at_pi(parameters.model) && sgn(r.Y) == 0 && sgn(r.X) < 0) throw_folded_rest(parameters.model);
+  Int longest_x, longest_r;
+  Conditioning k;
+  k.length = std::max(longest_edge(sx, longest_x), longest_edge(sr, longest_r));
+  detail::WorkingPrecision precision(320);
+  std::array<Real, 3> sums{Real(320), Real(320), Real(320)};
+  for (Real& s : sums) mpfr_set_ui(s.get(), 0, MPFR_RNDN);
+  const EnergyDifferences differences(sx, sr, parameters, gauss_newton);
+  differences.add(0, refinement(longest_x), sums);
+  differences.add(1, refinement(longest_r), sums);
+  const double sizes[3] = {scaled_norm(&energy, 1), scaled_norm(grad.data(), 12), scaled_norm(hess.data(), 144)};
+  for (int g = 0; g < 3; ++g) {
+    mpfr_sqrt(sums[g].get(), sums[g].get(), MPFR_RNDN);
+    mpfr_mul_d(sums[g].get(), sums[g].get(), k.length, MPFR_RNDN);
+    k.scale[g] = mpfr_get_d(sums[g].get(), MPFR_RNDN);
+    k.kappa[g] = sizes[g] == 0 ? 1.0 : k.scale[g] / sizes[g];
+  }
+  return k;
+}
 
 double scaled_norm(const double* v, std::size_t n) {
   double largest = 0;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 
+#include "hinge/core/energy.hpp"
 #include "hinge/oracle/oracle.hpp"
 
 namespace hinge::oracle {
@@ -30,6 +31,16 @@ struct ConditionedTheta {
   Conditioning conditioning;
 };
 ConditionedTheta certified_with_conditioning(const std::array<double, 12>& x, const Options& options = {});
+
+// The conditioning of a hinge's bending term psi(X; R) (docs/conformance.md, "Bending energies"): L the
+// longest of the ten edge vectors of X and R; J_f the Jacobian of output group f (psi; its gradient and its
+// Hessian, exact or Gauss-Newton, with respect to X) with respect to the 24 coordinates of X and R, by
+// central differences of enclosures at 320 bits with a step of at most 2^-100 L in every coordinate;
+// scale_f = L ||J_f||_F. `values` (psi, grad 12, hess 144, as certified) give kappa_f = scale_f / ||f||_2
+// (1 where f is exactly zero). Throws as certified_mesh does (DomainError where psi is infinite).
+Conditioning energy_conditioning(const std::array<double, 12>& x, const std::array<double, 12>& rest,
+                                 const EnergyParameters& parameters, bool gauss_newton, double energy,
+                                 const std::array<double, 12>& grad, const std::array<double, 144>& hess);
 
 // ||v||_2 without overflow or underflow: scaled by the largest magnitude, in a fixed order of operations;
 // NaN when an entry is.
