@@ -1,0 +1,31 @@
+// hinge/conformance/energy_expected.hpp: what a bending term must give on an energy case (docs/conformance.md,
+// "Bending energies"): the certified psi = c f(theta, theta_bar), its gradient and its Hessian (exact or
+// Gauss-Newton) with respect to the deformed hinge X, and their conditioning over the 24 coordinates of X
+// and the rest hinge R, as an Expected the grading takes (its theta slot holds psi).
+#pragma once
+
+#include "hinge/conformance/energy_inputs.hpp"
+#include "hinge/conformance/grading.hpp"
+#include "hinge/core/energy.hpp"
+
+namespace hinge::conformance {
+
+// The Hessian a candidate declares: the exact one, or the Gauss-Newton one c f'' grad theta grad theta^T
+// (not clamped).
+enum class HessianKind { exact, gauss_newton };
+
+struct EnergyProblem {
+  Model model = Model::tan;  // shells, tan, willmore, bridson (the contract's weight: a = 3 |e_bar|^2 / A_bar)
+  double k = 1;
+  HessianKind hessian = HessianKind::exact;
+};
+
+// The certified psi (in values.theta), gradient and Hessian of `c` (oracle::certified_mesh on the hinge's two
+// triangles, each output the double nearest the exact value), and, with `conditioning`, their condition
+// numbers (oracle::energy_conditioning). Where psi is exactly zero, the energy group's scale is set so that
+// the policy's tolerance (base + c kappa, kappa = 1 there) allows exactly the contract's bound
+// |psi_candidate| <= c f''(theta_bar) (16 u (s_X + s_R))^2 / 2, s_X and s_R the theta scales L ||grad theta||
+// of X and R, with the default policy. Throws hinge::DomainError where psi is infinite (tan at +-pi).
+Expected energy_expected(const EnergyCase& c, const EnergyProblem& problem, bool conditioning = true);
+
+}  // namespace hinge::conformance
