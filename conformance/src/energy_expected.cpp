@@ -12,14 +12,6 @@
 namespace hinge::conformance {
 namespace {
 
-// The hinge as a mesh of its two triangles, (x0, x1, x2) and (x3, x2, x1): vertex v is x_v.
-Mesh hinge_mesh(const std::array<double, 12>& x) {
-  Mesh m;
-  for (int v = 0; v < 4; ++v) m.vertices.push_back({x[3 * v], x[3 * v + 1], x[3 * v + 2]});
-  m.faces = {{0, 1, 2}, {3, 2, 1}};
-  return m;
-}
-
 double norm3(double a, double b, double c) { return std::sqrt(a * a + b * b + c * c); }
 
 // |psi''(theta_bar)| in double, with the contract's weight computed from R in double: a tolerance needs a

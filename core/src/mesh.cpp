@@ -157,6 +157,13 @@ std::array<double, 12> hinge_coordinates(const Mesh& mesh, const Hinge& h) {
   return x;
 }
 
+Mesh hinge_mesh(const std::array<double, 12>& x) {
+  Mesh m;
+  for (int v = 0; v < 4; ++v) m.vertices.push_back({x[3 * v], x[3 * v + 1], x[3 * v + 2]});
+  m.faces = {{0, 1, 2}, {3, 2, 1}};
+  return m;
+}
+
 void check_faces_nondegenerate(const Mesh& mesh) {
   check_face_indices(mesh, false);  // a repeated index is reported below, as zero area
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {

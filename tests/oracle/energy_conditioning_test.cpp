@@ -21,13 +21,6 @@ struct Certified {
   std::array<double, 144> hess{};
 };
 
-Mesh hinge_mesh(const std::array<double, 12>& x) {
-  Mesh m;
-  for (int v = 0; v < 4; ++v) m.vertices.push_back({x[3 * v], x[3 * v + 1], x[3 * v + 2]});
-  m.faces = {{0, 1, 2}, {3, 2, 1}};
-  return m;
-}
-
 Certified certified(const std::array<double, 12>& x, const std::array<double, 12>& rest, const EnergyParameters& p) {
   const Mesh mx = hinge_mesh(x), mr = hinge_mesh(rest);
   const CertifiedMesh c = certified_mesh(mx, mr, build_topology(mx), p);

@@ -27,14 +27,6 @@ Entries entries(const Eigen::SparseMatrix<double>& m) {
   return e;
 }
 
-// The hinge x as a mesh of its two triangles: vertex v is x_v, so global and local variables coincide.
-Mesh hinge_mesh(const std::array<double, 12>& x) {
-  Mesh m;
-  for (int v = 0; v < 4; ++v) m.vertices.push_back({x[3 * v], x[3 * v + 1], x[3 * v + 2]});
-  m.faces = {{0, 1, 2}, {3, 2, 1}};
-  return m;
-}
-
 // psi'' grad theta grad theta^T (upper triangle) in MPFR at 1024 bits, rounded to double.
 Entries gauss_newton_at_1024_bits(const Mesh& deformed, const Mesh& rest, const EnergyParameters& p) {
   const unsigned previous = set_mpfr_bits(1024);

@@ -61,6 +61,10 @@ Topology build_topology(const Mesh& mesh);
 // The 12 coordinates of hinge h, in the order x0, x1, x2, x3.
 std::array<double, 12> hinge_coordinates(const Mesh& mesh, const Hinge& h);
 
+// The hinge x (x0, x1, x2, x3) as a mesh of its two triangles, (x0, x1, x2) and (x3, x2, x1): vertex v is x_v,
+// so that the mesh's global variables are the hinge's own (a one-hinge mesh for the mesh evaluators).
+Mesh hinge_mesh(const std::array<double, 12>& x);
+
 // Throws hinge::InputError naming the first face whose three vertices have exactly zero area (collinear
 // or coincident), judged exactly on the doubles of `mesh` (docs/contract.md).
 void check_faces_nondegenerate(const Mesh& mesh);
