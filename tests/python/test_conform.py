@@ -201,6 +201,12 @@ def test_a_negated_gradient_is_diagnosed_as_a_force():
     assert named(hinge.conform(transformed(lambda t, g, h: (t, -g, h))), r"the gradient negated \(a force\)")
 
 
+def test_a_negated_gradient_and_hessian_are_diagnosed_as_a_force_and_its_jacobian():
+    report = hinge.conform(transformed(lambda t, g, h: (t, -g, -h)))
+    assert named(report, r"the gradient and Hessian negated \(a force and its Jacobian\)")
+    assert not named(report, r"the gradient negated \(a force\)\.")
+
+
 def test_coordinate_major_variables_are_diagnosed():
     order = np.array([3 * v + c for c in range(3) for v in range(4)])  # x0.x, x1.x, x2.x, x3.x, x0.y, ...
 
