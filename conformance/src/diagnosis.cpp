@@ -222,7 +222,7 @@ class Diagnoser {
 
   // candidate - graded-against, as outputs.
   Outputs residual(const Hypothesis& h, const Outputs& applied, std::size_t i) const {
-    const Outputs got = h.forward ? outputs_of(rounded_to(grading_.dtype, results_[i])) : applied;
+    const Outputs got = h.forward ? outputs_of(results_[i]) : applied;
     const Outputs want = h.forward ? applied : outputs_of(expected_[i].values);
     Outputs d;
     d.theta = got.theta - want.theta;
@@ -257,17 +257,16 @@ class Diagnoser {
   void add_forward(std::string key, std::string explanation, std::string change,
                    std::function<std::optional<Outputs>(const Outputs&, double)> predict) {
     hypotheses_.push_back(
-        {std::move(key), std::move(explanation), std::move(change), true, [this, predict](std::size_t i) {
-           return predict(outputs_of(expected_[i].values), rounded_to(grading_.dtype, results_[i]).theta);
-         }});
+        {std::move(key), std::move(explanation), std::move(change), true,
+         [this, predict](std::size_t i) { return predict(outputs_of(expected_[i].values), results_[i].theta); }});
   }
   // Repairs in the candidate's own order.
   void add_inverse(std::string key, std::string explanation, std::string change,
                    std::function<Outputs(const Outputs&)> repair) {
     hypotheses_.push_back(
         {std::move(key), std::move(explanation), std::move(change), false, [this, repair](std::size_t i) {
-           return std::optional<Outputs>(to_contract(
-               repair(to_candidate(outputs_of(rounded_to(grading_.dtype, results_[i])), stencil_)), stencil_));
+           return std::optional<Outputs>(
+               to_contract(repair(to_candidate(outputs_of(results_[i]), stencil_)), stencil_));
          }});
   }
 
@@ -408,7 +407,7 @@ class Diagnoser {
       hypotheses_.back().apply = [this, perm](std::size_t i) {
         // The order's class includes its orders with theta negated: on the branch cut either sign of pi.
         std::optional<Outputs> o = permuted(i, perm);
-        if (o && on_cut(o->theta) && on_cut(-rounded_to(grading_.dtype, results_[i]).theta)) o->theta = -o->theta;
+        if (o && on_cut(o->theta) && on_cut(-results_[i].theta)) o->theta = -o->theta;
         return o;
       };
     } while (std::next_permutation(perm.begin(), perm.end()));

@@ -52,24 +52,8 @@ FALSIFY = None
 
 
 # ---------------------------------------------------------------- exact vectors (Fraction or SymPy)
-def sub(u, v):
-    return [u[0] - v[0], u[1] - v[1], u[2] - v[2]]
-
-
-def add(u, v):
-    return [u[0] + v[0], u[1] + v[1], u[2] + v[2]]
-
-
-def scale(s, u):
-    return [s * u[0], s * u[1], s * u[2]]
-
-
-def dot(u, v):
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
-
-
-def cross(u, v):
-    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+# hinge_common's vector helpers are plain arithmetic: they take Fractions and SymPy expressions as they are.
+sub, add, scale, dot, cross = hc.vsub, hc.vadd, hc.vscale, hc.dot, hc.cross
 
 
 def fsqrt(q):

@@ -15,16 +15,15 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 from script_tests import run_all  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from certified_outputs import certified_outputs  # noqa: E402
+
 HINGE, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
 
 
 def certified():
-    inputs, out = os.path.join(WORK, "inputs.jsonl"), os.path.join(WORK, "oracle.jsonl")
-    if not os.path.exists(out):
-        subprocess.run([HINGE, "conform", "--inputs", "--output", inputs], check=True)
-        subprocess.run([HINGE, "oracle", "--input", inputs, "--output", out], check=True)
-    return [json.loads(line) for line in open(out)]
+    return certified_outputs(HINGE, WORK)
 
 
 def conform(lines, name):

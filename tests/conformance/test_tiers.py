@@ -12,6 +12,9 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 from script_tests import run_all  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from certified_outputs import certified_outputs  # noqa: E402
+
 HINGE, WORK = sys.argv[1], sys.argv[2]
 os.makedirs(WORK, exist_ok=True)
 TIERS = ["correctly-rounded", "faithful", "4u", "policy", "approximate", "fail"]
@@ -28,11 +31,7 @@ def conform(*args):
 
 
 def oracle_file():
-    inputs, certified = os.path.join(WORK, "inputs.jsonl"), os.path.join(WORK, "oracle.jsonl")
-    if not os.path.exists(certified):
-        subprocess.run([HINGE, "conform", "--inputs", "--output", inputs], check=True)
-        subprocess.run([HINGE, "oracle", "--input", inputs, "--output", certified], check=True)
-    return [json.loads(line) for line in open(certified)]
+    return certified_outputs(HINGE, WORK)
 
 
 def write(lines, name):

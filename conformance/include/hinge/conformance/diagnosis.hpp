@@ -31,8 +31,9 @@ struct Finding {
 };
 
 // The findings for the failing categories of a graded run: `expected`, `results` (the candidate's
-// outputs in the contract's order, as graded) and `outcomes` index-aligned; `stencil` the order the
-// candidate declared. Findings that explain several categories are merged (one sentence listing them).
+// outputs in the contract's order, as graded: already rounded to the dtype, as make_report keeps them)
+// and `outcomes` index-aligned; `stencil` the order the candidate declared. Findings that explain several
+// categories are merged (one sentence listing them).
 std::vector<Finding> diagnose(const std::vector<Expected>& expected, const std::vector<CandidateResult>& results,
                               const std::vector<CaseOutcome>& outcomes, const Grading& grading, const Stencil& stencil);
 
