@@ -15,8 +15,8 @@
 // The hinge, variables in the contract's order x0, x1, x2, x3 (12 coordinates):
 //
 //            x2
-//           /|\
-//          / | \
+//           /|\   .
+//          / | \  .
 //        x0  |  x3      hinge edge x1 -> x2; triangles (x0, x1, x2) and (x3, x2, x1)
 //          \ | /
 //           \|/
@@ -124,7 +124,8 @@ struct RigidMotion {
 };
 // "translation", "quarter turn about x", "quarter turn about y", "quarter turn about z", "general rotation".
 const std::vector<RigidMotion>& rigid_motions();
-// Q x_v + t for every vertex v of `x` (3n coordinates); translate = false turns a gradient (Q g_v).
+// Q x_v + t for every vertex v of `x` (3n coordinates); translate = false turns a gradient (Q g_v). Call it
+// qualified (conformance::apply) on a std::array: argument-dependent lookup also finds std::apply.
 std::vector<double> apply(const RigidMotion& m, std::span<const double> x, bool translate = true);
 
 }  // namespace hinge::conformance
