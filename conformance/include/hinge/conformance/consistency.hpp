@@ -54,7 +54,7 @@ struct ConsistencyOptions {
 
 // The steps of the difference checks, h = 2^step_exponent(dtype) * 2^floor(log2 L), L the longest edge of X
 // (a power of two, so that the probes x +- h, x +- 2h, x +- 4h are exact): see consistency.cpp for why.
-int step_exponent(Dtype dtype);  // -10 in float64, -6 in float32
+int step_exponent(Dtype dtype);  // -12 in float64, -6 in float32
 
 // The base hinges of the checks and the probes a candidate must evaluate (each coordinate representable in
 // the dtype).
@@ -98,8 +98,10 @@ struct ConsistencyCheck {
 // The consistency checks of the candidate's `outputs` (index-aligned with plan.x) on each base case, in
 // base-case order, each case's checks in the order above (checks of outputs not given are left out).
 // c[i] = k * w of base case i (the normalizer where an output's norm is zero: c for the energy, c / L for the
-// gradient, c / L^2 for the Hessian, c for the torque, which is measured relative to L ||g||).
-// Throws std::invalid_argument when the sizes do not match the plan.
+// gradient, c / L^2 for the Hessian, c for the torque, which is measured relative to L ||g||). An output counts
+// as zero where its norm is within its own rounding, 16 u ||J|| ||x|| (J its Jacobian, measured by differences
+// of the candidate's outputs): at rest and at the rest angle a candidate's force is that, not exactly 0.
+// Throws std::invalid_argument when the sizes do not match the plan, or options.dtype is not plan.dtype.
 std::vector<ConsistencyCheck> consistency_checks(const ConsistencyPlan& plan, const std::vector<EnergyOutputs>& outputs,
                                                  const std::vector<double>& c, const ConsistencyOptions& options);
 
