@@ -248,7 +248,8 @@ int write_vectors(const ConformOptions& o) {
             << s.float32 << " (hinges-float32/), " << s.deep << " (deep/: " << s.deep_draws << " draws, "
             << s.deep_invalid << " invalid, " << s.deep_uncertified << " uncertified dropped), " << s.deep_float32
             << " (deep-float32/: " << s.deep_float32_draws << " draws, " << s.deep_float32_invalid << " invalid, "
-            << s.deep_float32_uncertified << " uncertified dropped), " << s.meshes << " mesh cases\n";
+            << s.deep_float32_uncertified << " uncertified dropped), " << s.energy_cases
+            << " energy cases' conditioning (energies/), " << s.meshes << " mesh cases\n";
   return exit_done;
 }
 

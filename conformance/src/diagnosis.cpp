@@ -14,6 +14,8 @@
 // candidate as graded, its negation is "theta negated"; the other ten are the order hypotheses.
 #include "hinge/conformance/diagnosis.hpp"
 
+#include "diagnosis_engine.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -29,14 +31,9 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-struct Outputs {
-  double theta = 0;
-  std::array<double, 12> grad{};
-  std::array<double, 144> hess{};
-};
-
-Outputs outputs_of(const CertifiedTheta& v) { return {v.theta, v.grad, v.hess}; }
-Outputs outputs_of(const CandidateResult& r) { return {r.theta, r.grad, r.hess}; }
+using detail::Hypothesis;
+using detail::Outputs;
+using detail::outputs_of;
 
 Outputs scaled(Outputs o, double theta, double grad, double hess) {
   o.theta *= theta;
@@ -84,18 +81,6 @@ std::string label_tuple(const Stencil& s, bool quoted) {
   return out + ")";
 }
 
-// A hypothesis: for case i (of the expected, results arrays) the outputs graded in its place, or nothing
-// when it cannot be applied (the permuted hinge is degenerate).
-struct Hypothesis {
-  std::string key, explanation, change;
-  bool forward = true;  // predicts the expected values (true) or repairs the candidate's (false)
-  std::function<std::optional<Outputs>(std::size_t)> apply;
-  std::array<bool, 3> changes{true, true, true};  // the output groups it can change (theta, grad, hess)
-  // A variant of the hypothesis before it that differs from it only in these groups: tried only where one of
-  // them was given (else the two are one hypothesis, named once as the earlier).
-  std::array<bool, 3> differs{true, true, true};
-};
-
 // -theta. On the branch cut (+pi) either sign: a kernel that negates its atan2 returns -pi there, one that
 // reads the hinge in the other orientation (x1 and x2 exchanged) +pi, and both are this mismatch; `got` is
 // the candidate's theta.
@@ -134,9 +119,11 @@ bool within_tolerance(const Outputs& a, const Outputs& b, const Expected& e, con
 class Diagnoser {
  public:
   Diagnoser(const std::vector<Expected>& expected, const std::vector<CandidateResult>& results,
-            const std::vector<CaseOutcome>& outcomes, const Grading& grading, const Stencil& stencil)
-      : expected_(expected), results_(results), outcomes_(outcomes), grading_(grading), stencil_(stencil) {
-    build_hypotheses();
+            const std::vector<CaseOutcome>& outcomes, const Grading& grading, const Stencil& stencil,
+            std::vector<Hypothesis> hypotheses = {})
+      : expected_(expected), results_(results), outcomes_(outcomes), grading_(grading), stencil_(stencil),
+        hypotheses_(std::move(hypotheses)) {
+    if (hypotheses_.empty()) build_hypotheses();  // the theta kit's conventions
   }
 
   // The hypotheses that explain category `cases` (indices of evaluated cases), simplest first, each with
@@ -426,10 +413,10 @@ class Diagnoser {
 
 std::string stencil_name(const Stencil& s) { return label_tuple(s, false); }
 
-std::vector<Finding> diagnose(const std::vector<Expected>& expected, const std::vector<CandidateResult>& results,
-                              const std::vector<CaseOutcome>& outcomes, const Grading& grading,
-                              const Stencil& stencil) {
-  Diagnoser diagnoser(expected, results, outcomes, grading, stencil);
+namespace {
+
+// The findings of `diagnoser`'s hypotheses on the failing categories of `outcomes`.
+std::vector<Finding> findings_of(Diagnoser& diagnoser, const std::vector<CaseOutcome>& outcomes) {
   std::vector<std::string> order;  // categories in report order
   std::map<std::string, std::vector<std::size_t>> evaluated;
   std::map<std::string, bool> failing;  // an evaluated case at tier fail: what a mismatch must lift
@@ -495,4 +482,24 @@ std::vector<Finding> diagnose(const std::vector<Expected>& expected, const std::
   return findings;
 }
 
+}  // namespace
+
+std::vector<Finding> diagnose(const std::vector<Expected>& expected, const std::vector<CandidateResult>& results,
+                              const std::vector<CaseOutcome>& outcomes, const Grading& grading,
+                              const Stencil& stencil) {
+  Diagnoser diagnoser(expected, results, outcomes, grading, stencil);
+  return findings_of(diagnoser, outcomes);
+}
+
+namespace detail {
+
+std::vector<Finding> explain_failures(std::vector<Hypothesis> hypotheses, const std::vector<Expected>& expected,
+                                      const std::vector<CandidateResult>& results,
+                                      const std::vector<CaseOutcome>& outcomes, const Grading& grading) {
+  if (hypotheses.empty()) return {};
+  Diagnoser diagnoser(expected, results, outcomes, grading, contract_stencil, std::move(hypotheses));
+  return findings_of(diagnoser, outcomes);
+}
+
+}  // namespace detail
 }  // namespace hinge::conformance

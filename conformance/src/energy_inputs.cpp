@@ -2,6 +2,7 @@
 // conformance inputs are (construction.hpp): a fixed seed, IEEE-754 basic operations, MPFR's sines.
 #include "hinge/conformance/energy_inputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -88,7 +89,30 @@ X12 rest_angle_rest(Random& r, const X12& x) {
   throw std::logic_error("rest-angle: no exact construction");  // the last candidate is always exact
 }
 
+// The binary exponent of x's size: that of its largest coordinate difference.
+int size_exponent(const X12& x) {
+  double largest = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(x[3 * a + c] - x[3 * b + c]));
+  return std::ilogb(largest);
+}
+
 }  // namespace
+
+RestShape rest_shape(const std::array<double, 12>& r) {
+  double largest = 0;
+  for (int v = 0; v < 4; ++v)
+    for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(r[3 * v + c] - r[3 + c]));
+  const auto sub = [&](int a, int b, int c) { return (r[3 * a + c] - r[3 * b + c]) / largest; };
+  const auto norm3 = [](double a, double b, double c) { return std::sqrt(a * a + b * b + c * c); };
+  const auto area = [&](int o, int a, int b) {  // |(x_a - x_o) x (x_b - x_o)| / 2, in units of largest^2
+    const double u[3] = {sub(a, o, 0), sub(a, o, 1), sub(a, o, 2)}, v[3] = {sub(b, o, 0), sub(b, o, 1), sub(b, o, 2)};
+    return norm3(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]) / 2;
+  };
+  return {norm3(sub(2, 1, 0), sub(2, 1, 1), sub(2, 1, 2)) * largest, area(1, 0, 2) * largest * largest,
+          area(2, 3, 1) * largest * largest};
+}
 
 const std::vector<std::string>& rest_kinds() {
   static const std::vector<std::string> kinds{"flat", "obtuse", "negative", "near-cut", "at-rest", "rest-angle"};
@@ -123,6 +147,10 @@ EnergyInputs energy_inputs(int per_category) {
           else if (kind == "at-rest") rest = deformed.x;
           else rest = rest_angle_rest(r, deformed.x);
         } while (!valid(rest));
+        // The drawn rest hinges (edges 0.25 to 4 long) brought to the deformed hinge's size by a power of two
+        // (exact): a rest hinge 2^500 times larger than X would make the conditioning over X and R (L the
+        // longest of their edges) overflow, and no simulator pairs such shapes.
+        if (kind != "at-rest" && kind != "rest-angle") rest = scaled_by_power_of_two(rest, size_exponent(deformed.x));
         EnergyCase e{category + "/" + kind + "/" + tag, category + "/" + kind, deformed.x, rest};
         const double theta_bar = oracle::certified_theta_derivatives(rest).theta;
         if (std::fabs(theta - theta_bar) > pi) out.left_out.push_back(e.id);

@@ -96,6 +96,10 @@ MeshComparison compare_mesh_gradient(const CertifiedMesh& m, const std::vector<d
   return c;
 }
 
+const char* group_name(const Grading& grading, int g) {
+  return (grading.energy ? energy_group_names : group_names)[static_cast<std::size_t>(g)];
+}
+
 double unit_roundoff(Dtype d) { return d == Dtype::float32 ? 0x1p-24 : 0x1p-53; }
 
 const char* dtype_name(Dtype d) { return d == Dtype::float32 ? "float32" : "float64"; }

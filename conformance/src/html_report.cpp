@@ -191,10 +191,10 @@ void header(std::ostream& out, const Report& r) {
   out << "<dt>outputs checked</dt><dd>";
   std::string given;
   for (int g = 0; g < 3; ++g)
-    if (gr.given[g]) given += (given.empty() ? "" : ", ") + std::string(group_names[g]);
+    if (gr.given[g]) given += (given.empty() ? "" : ", ") + std::string(group_name(r.grading, g));
   out << (given.empty() ? "none" : given);
   for (int g = 0; g < 3; ++g)
-    if (!gr.given[g]) out << "; " << group_names[g] << " not checked";
+    if (!gr.given[g]) out << "; " << group_name(r.grading, g) << " not checked";
   out << "</dd>\n";
   out << "<dt>stencil</dt><dd>" << escape(stencil_name(r.stencil))
       << (r.stencil == contract_stencil ? " (the contract's order)"
@@ -232,7 +232,7 @@ void category_table(std::ostream& out, const Report& r) {
   out << "<section id=\"categories\"><h2>Tiers per category</h2>\n<table>\n<tr><th class=\"l\" rowspan=\"2\">"
          "category</th><th rowspan=\"2\">cases</th><th rowspan=\"2\">missing</th><th rowspan=\"2\">non-finite</th>"
          "<th rowspan=\"2\">failed</th>";
-  for (int g = 0; g < 3; ++g) out << "<th colspan=\"2\">" << group_names[g] << "</th>";
+  for (int g = 0; g < 3; ++g) out << "<th colspan=\"2\">" << group_name(r.grading, g) << "</th>";
   out << "<th rowspan=\"2\">tier</th><th class=\"l\" rowspan=\"2\">worst case (error / tolerance)</th></tr>\n<tr>";
   for (int g = 0; g < 3; ++g) out << "<th>median</th><th>worst</th>";
   out << "</tr>\n";
@@ -269,7 +269,7 @@ void category_table(std::ostream& out, const Report& r) {
         out << ": " << escape(r.results[failing[k]].error);
       out << "</td>";
       if (ok)
-        out << "<td>" << group_names[o.group] << "</td><td>" << num(o.error[o.group]) << "</td><td>"
+        out << "<td>" << group_name(r.grading, o.group) << "</td><td>" << num(o.error[o.group]) << "</td><td>"
             << num(o.tolerance[o.group]) << "</td><td>" << num(o.kappa[o.group]) << "</td>";
       else out << "<td></td><td>inf</td><td></td><td></td>";
       out << "<td>" << num(o.ratio) << "</td><td class=\"" << tier_class(o.tier) << "\">" << tier_name(o.tier)
@@ -322,8 +322,8 @@ void scatter(std::ostream& out, const Report& r, int g) {
     return x_of(std::clamp(std::log10(k), static_cast<double>(xlo), static_cast<double>(xhi)));
   };
 
-  out << "<svg class=\"scatter\" data-group=\"" << group_names[g] << "\" width=\"" << width << "\" height=\"" << height
-      << "\" viewBox=\"0 0 " << width << ' ' << height << "\" role=\"img\">\n";
+  out << "<svg class=\"scatter\" data-group=\"" << group_name(r.grading, g) << "\" width=\"" << width << "\" height=\""
+      << height << "\" viewBox=\"0 0 " << width << ' ' << height << "\" role=\"img\">\n";
   // Grid and ticks.
   const int xstep = label_step(xlo, xhi), ystep = label_step(ylo, yhi);
   for (int k = xlo; k <= xhi; ++k) {
@@ -355,9 +355,9 @@ void scatter(std::ostream& out, const Report& r, int g) {
   out << "<rect class=\"axis\" x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\""
       << bottom - top << "\"/>\n";
   out << "<text x=\"" << (left + right) / 2 << "\" y=\"" << bottom + 36 << "\" text-anchor=\"middle\">condition "
-      << "number &#954;<tspan dy=\"3\" font-size=\"8\">" << group_names[g] << "</tspan></text>\n";
+      << "number &#954;<tspan dy=\"3\" font-size=\"8\">" << group_name(r.grading, g) << "</tspan></text>\n";
   out << "<text transform=\"rotate(-90)\" x=\"" << -(top + bottom) / 2 << "\" y=\"16\" text-anchor=\"middle\">"
-      << "normwise error of " << group_names[g] << ", units of u</text>\n";
+      << "normwise error of " << group_name(r.grading, g) << ", units of u</text>\n";
 
   // The lines a + b kappa, where they are inside the plot (both increase with kappa).
   const auto line = [&](double a, double b, const char* css) {
@@ -413,9 +413,10 @@ void scatters(std::ostream& out, const Report& r) {
          "(hover for its id); the tolerance grows with the condition number &kappa;, the error an accurate "
          "algorithm makes too.</p>\n";
   for (int g = 0; g < 3; ++g) {
-    out << "<div class=\"card\"><h3 id=\"scatter-" << group_names[g] << "\">" << group_names[g] << "</h3>\n";
+    out << "<div class=\"card\"><h3 id=\"scatter-" << group_name(r.grading, g) << "\">" << group_name(r.grading, g)
+        << "</h3>\n";
     if (r.grading.given[g]) scatter(out, r, g);
-    else out << "<p class=\"nc\">not checked: the candidate did not give " << group_names[g] << ".</p>\n";
+    else out << "<p class=\"nc\">not checked: the candidate did not give " << group_name(r.grading, g) << ".</p>\n";
     out << "</div>\n";
   }
   out << "</section>\n";
@@ -598,7 +599,7 @@ void reproducer(std::ostream& out, const Report& r, const Expected& e, const Cas
   }
   std::string outputs;
   for (int g = 0; g < 3; ++g)
-    if (gr.given[g]) outputs += std::string(outputs.empty() ? "" : ", ") + "\"" + group_names[g] + "\"";
+    if (gr.given[g]) outputs += std::string(outputs.empty() ? "" : ", ") + "\"" + group_name(r.grading, g) + "\"";
   const char* dtype = f32 ? "np.float32" : "np.float64";
 
   std::string code;
@@ -618,11 +619,11 @@ void reproducer(std::ostream& out, const Report& r, const Expected& e, const Cas
   if (gr.given[2]) put("    \"hess\": np.array(" + python_matrix(hess.data(), 22) + "),\n");
   put("}\nKAPPA = {");
   for (int g = 0, n = 0; g < 3; ++g)
-    if (gr.given[g]) put((n++ ? ", \"" : "\"") + std::string(group_names[g]) + "\": " + python(o.kappa[g]));
+    if (gr.given[g]) put((n++ ? ", \"" : "\"") + std::string(group_name(r.grading, g)) + "\": " + python(o.kappa[g]));
   put("}\nSCALE = {");
   for (int g = 0, n = 0; g < 3; ++g)
     if (gr.given[g])
-      put((n++ ? ", \"" : "\"") + std::string(group_names[g]) + "\": " + python(e.conditioning.scale[g]));
+      put((n++ ? ", \"" : "\"") + std::string(group_name(r.grading, g)) + "\": " + python(e.conditioning.scale[g]));
   put("}\n\n\n");
   put("def _norm(v):\n"
       "    v = np.asarray(v, dtype=np.float64).ravel()\n"
@@ -662,15 +663,16 @@ void worst_case(std::ostream& out, const Report& r) {
     out << "), is reproduced below.</p>\n";
   } else {
     out << "<p><b class=\"worst-id\">" << escape(o.id) << "</b> (" << escape(o.category)
-        << "): " << group_names[o.group] << " error " << num(o.error[o.group]) << " units of u, tolerance "
+        << "): " << group_name(r.grading, o.group) << " error " << num(o.error[o.group]) << " units of u, tolerance "
         << num(o.tolerance[o.group]) << " (&kappa; " << num(o.kappa[o.group]) << "), " << num(o.ratio)
-        << " times the tolerance; tier " << tier_name(o.tier) << ". Largest difference at " << group_names[o.group];
+        << " times the tolerance; tier " << tier_name(o.tier) << ". Largest difference at "
+        << group_name(r.grading, o.group);
     if (o.group > 0) out << '[' << o.entry << ']';
     out << ": expected " << exact(o.expected_value) << ", got " << exact(o.candidate_value) << ".</p>\n";
     out << "<table><tr><th class=\"l\">group</th><th>error</th><th>tolerance</th><th>&kappa;</th><th>error / "
            "tolerance</th></tr>\n";
     for (int g = 0; g < 3; ++g) {
-      out << "<tr><td class=\"l\">" << group_names[g] << "</td>";
+      out << "<tr><td class=\"l\">" << group_name(r.grading, g) << "</td>";
       if (!r.grading.given[g]) out << "<td class=\"nc\" colspan=\"4\">not checked</td></tr>\n";
       else
         out << "<td>" << num(o.error[g]) << "</td><td>" << num(o.tolerance[g]) << "</td><td>" << num(o.kappa[g])

@@ -348,7 +348,7 @@ class Builder {
   void add(const std::string& tag, const X12& x) {
     if (!format_.valid(x))
       throw std::logic_error(std::string(format_.set) + " input " + category_ + "/" + tag + " is not valid");
-    out_.push_back({category_ + "/" + two_digits(index_++) + "-" + tag, category_, x});
+    out_.push_back({category_ + "/" + two_digits(index_++) + "-" + tag, category_, x, std::nullopt});
   }
   // Adds the first valid hinge of make() (bounded: a construction that fails 100 times in a row is a bug).
   template <class Make>
@@ -566,7 +566,7 @@ std::vector<Case> hard_set(const Format& f, std::uint64_t seed, int per_family) 
   std::vector<Case> out;
   Random r(seed);
   auto add = [&](const std::string& family, const std::string& tag, const X12& x) {
-    if (f.valid(x)) out.push_back({family + "/" + std::to_string(out.size()) + "-" + tag, family, x});
+    if (f.valid(x)) out.push_back({family + "/" + std::to_string(out.size()) + "-" + tag, family, x, std::nullopt});
   };
   struct Needle {
     std::string tag;

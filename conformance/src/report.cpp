@@ -12,9 +12,12 @@
 namespace hinge::conformance {
 namespace {
 
-std::string entry_name(int group, int entry) {
-  if (group == 0) return "theta";
-  return std::string(group_names[group]) + "[" + std::to_string(entry) + "]";
+std::string entry_name(const Grading& grading, int group, int entry) {
+  std::string name = group_name(grading, group);
+  if (group == 0) return name;
+  name += "[";
+  name += std::to_string(entry);
+  return name + "]";
 }
 
 std::string fixed(double v, int digits = 1) {
@@ -42,6 +45,36 @@ const char* status_name(CandidateResult::Status s) {
     case CandidateResult::Status::ok: return "ok";
   }
   return "?";
+}
+
+// The consistency checks, per kind: how many, how many failed, the worst (discrepancy / threshold).
+void print_checks(std::ostream& out, const std::vector<ConsistencyCheck>& checks) {
+  if (checks.empty()) return;
+  std::vector<std::string> kinds;
+  for (const ConsistencyCheck& c : checks)
+    if (std::find(kinds.begin(), kinds.end(), c.check) == kinds.end()) kinds.push_back(c.check);
+  std::size_t failed = 0;
+  for (const ConsistencyCheck& c : checks) failed += !c.pass;
+  out << "\nconsistency checks (docs/energy-conformance.md): " << checks.size() << " checks, " << failed
+      << " failed; a check fails where its discrepancy exceeds both 8 times its error estimate and the floor\n";
+  for (const std::string& kind : kinds) {
+    const ConsistencyCheck* worst = nullptr;
+    std::size_t count = 0, failing = 0;
+    const auto ratio = [](const ConsistencyCheck& c) {
+      return c.threshold > 0 ? c.discrepancy / c.threshold : c.discrepancy;
+    };
+    for (const ConsistencyCheck& c : checks) {
+      if (c.check != kind) continue;
+      ++count;
+      failing += !c.pass;
+      if (!worst || !(ratio(c) <= ratio(*worst))) worst = &c;
+    }
+    out << (failing ? "FAIL " : "pass ") << kind << ": " << count << " hinges, " << failing << " failed; worst "
+        << worst->case_id << ": discrepancy " << exact(worst->discrepancy) << " (threshold " << exact(worst->threshold)
+        << ")";
+    if (!worst->detail.empty()) out << "; " << worst->detail;
+    out << '\n';
+  }
 }
 
 }  // namespace
@@ -124,7 +157,8 @@ Report make_report(std::string candidate, std::vector<Expected> expected, std::v
   for (std::size_t i = 0; i < r.expected.size(); ++i)
     r.outcomes.push_back(compare(r.expected[i], r.results[i], grading));
   r.categories = summarize(r.outcomes);
-  r.diagnosis = diagnose(r.expected, r.results, r.outcomes, grading, stencil);
+  if (!grading.energy)
+    r.diagnosis = diagnose(r.expected, r.results, r.outcomes, grading, stencil);  // energies: their own
   r.passed = !r.categories.empty();
   r.tier = Tier::correctly_rounded;
   for (const CategorySummary& s : r.categories) {
@@ -140,25 +174,31 @@ void print_report(std::ostream& out, const Report& report) {
   const Dtype dtype = report.grading.dtype;
   std::size_t cases = report.outcomes.size();
   out << "hinge conform: " << report.candidate << " on " << cases << " cases";
-  out << " (dtype " << dtype_name(dtype) << ", depth " << report.depth << ")";
+  out << " (dtype " << dtype_name(dtype) << ", depth " << report.depth;
+  for (const auto& [key, value] : report.settings) out << ", " << key << " " << value;
+  out << ")";
   out << "\nnormwise errors in units of " << unit_name(dtype)
       << " (median / worst); tolerance per case and output: " << fixed(policy.base, 0) << " + " << fixed(policy.c, 0)
       << " kappa (docs/conformance.md)\n";
   std::string not_checked;
   for (int g = 0; g < 3; ++g)
-    if (!report.grading.given[g]) not_checked += std::string(not_checked.empty() ? "" : ", ") + group_names[g];
+    if (!report.grading.given[g])
+      not_checked += std::string(not_checked.empty() ? "" : ", ") + group_name(report.grading, g);
   if (!not_checked.empty()) out << "not checked (not given): " << not_checked << "\n";
   out << '\n';
   char line[512];
-  std::snprintf(line, sizeof line, "%-18s %5s %7s %9s  %-19s %-19s %-19s %-6s %-17s %s\n", "category", "cases",
-                "missing", "nonfinite", "theta", "grad", "hess", "result", "tier", "worst case (error / tolerance)");
+  int width = 18;  // the category column: the longest name
+  for (const CategorySummary& s : report.categories) width = std::max(width, static_cast<int>(s.category.size()));
+  std::snprintf(line, sizeof line, "%-*s %5s %7s %9s  %-19s %-19s %-19s %-6s %-17s %s\n", width, "category", "cases",
+                "missing", "nonfinite", group_name(report.grading, 0), "grad", "hess", "result", "tier",
+                "worst case (error / tolerance)");
   out << line;
   for (const CategorySummary& s : report.categories) {
     auto pair = [](double a, double b) {
       return std::isnan(a) ? std::string("not checked") : fixed(a) + " / " + fixed(b);
     };
-    std::snprintf(line, sizeof line, "%-18s %5d %7d %9d  %-19s %-19s %-19s %-6s %-17s %s (%s)\n", s.category.c_str(),
-                  s.cases, s.missing, s.nonfinite, pair(s.median[0], s.worst[0]).c_str(),
+    std::snprintf(line, sizeof line, "%-*s %5d %7d %9d  %-19s %-19s %-19s %-6s %-17s %s (%s)\n", width,
+                  s.category.c_str(), s.cases, s.missing, s.nonfinite, pair(s.median[0], s.worst[0]).c_str(),
                   pair(s.median[1], s.worst[1]).c_str(), pair(s.median[2], s.worst[2]).c_str(),
                   s.pass ? "pass" : "FAIL", tier_name(s.tier), s.worst_id.c_str(), fixed(s.worst_ratio, 2).c_str());
     out << line;
@@ -174,14 +214,16 @@ void print_report(std::ostream& out, const Report& report) {
       out << '\n';
       continue;
     }
-    out << group_names[o.group] << " error " << fixed(o.error[o.group]) << " > tolerance "
+    out << group_name(report.grading, o.group) << " error " << fixed(o.error[o.group]) << " > tolerance "
         << fixed(o.tolerance[o.group]) << " (kappa " << fixed(o.kappa[o.group], 2) << "); largest difference at "
-        << entry_name(o.group, o.entry) << ": expected " << exact(o.expected_value) << ", got "
+        << entry_name(report.grading, o.group, o.entry) << ": expected " << exact(o.expected_value) << ", got "
         << exact(o.candidate_value) << '\n';
   }
   for (const std::string& note : report.notes) out << "note: " << note << '\n';
+  print_checks(out, report.checks);
   if (!report.diagnosis.empty()) {
-    out << "\ndiagnosis (docs/conformance.md, \"Diagnosis\"):\n";
+    out << "\ndiagnosis (" << (report.grading.energy ? "docs/energy-conformance.md" : "docs/conformance.md")
+        << ", \"Diagnosis\"):\n";
     for (const Finding& f : report.diagnosis) out << "- " << f.sentence << '\n';
   }
   out << "\ntiers, best first (docs/conformance.md): correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), "
@@ -189,8 +231,17 @@ void print_report(std::ostream& out, const Report& report) {
          "approximate (outside the policy, within "
       << (dtype == Dtype::float32 ? "2^-8" : "2^-20")
       << " (1 + kappa) relative: not accurate), fail; a category's tier is the one\nits every case reaches\n";
-  out << (report.passed ? "PASS: every category is within the tolerance policy\n"
-                        : "FAIL: the candidate is outside the tolerance policy (exit status 1)\n");
+  bool consistent = true;
+  for (const ConsistencyCheck& c : report.checks) consistent = consistent && c.pass;
+  if (report.passed)
+    out << (report.categories.empty() ? "PASS: every consistency check passes\n"
+            : report.checks.empty()   ? "PASS: every category is within the tolerance policy\n"
+                                      : "PASS: every category is within the tolerance policy and every consistency "
+                                        "check passes\n");
+  else
+    out << (consistent ? "FAIL: the candidate is outside the tolerance policy (exit status 1)\n"
+                       : "FAIL: the candidate is outside the tolerance policy or fails a consistency check (exit "
+                         "status 1)\n");
 }
 
 void write_json_report(std::ostream& out, const Report& report) {
@@ -198,7 +249,8 @@ void write_json_report(std::ostream& out, const Report& report) {
   // no infinity.
   auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   auto groups = [&](const std::array<double, 3>& v) {
-    return nlohmann::json{{"theta", number(v[0])}, {"grad", number(v[1])}, {"hess", number(v[2])}};
+    return nlohmann::json{
+        {group_name(report.grading, 0), number(v[0])}, {"grad", number(v[1])}, {"hess", number(v[2])}};
   };
   const Policy& policy = report.grading.policy;
   nlohmann::json j;
@@ -207,11 +259,15 @@ void write_json_report(std::ostream& out, const Report& report) {
   j["units"] = std::string("normwise error in units of ") + unit_name(report.grading.dtype);
   j["dtype"] = dtype_name(report.grading.dtype);
   j["depth"] = report.depth;
+  if (!report.settings.empty()) {
+    j["settings"] = nlohmann::json::object();
+    for (const auto& [key, value] : report.settings) j["settings"][key] = value;
+  }
   j["stencil"] = nlohmann::json::array();
   for (const int v : report.stencil) j["stencil"].push_back(std::string{'x', static_cast<char>('0' + v)});
   j["given"] = nlohmann::json::array();
   for (int g = 0; g < 3; ++g)
-    if (report.grading.given[g]) j["given"].push_back(group_names[g]);
+    if (report.grading.given[g]) j["given"].push_back(group_name(report.grading, g));
   j["categories"] = nlohmann::json::array();
   for (const CategorySummary& s : report.categories) {
     const CaseOutcome& o = report.outcomes[s.worst_index];
@@ -220,8 +276,12 @@ void write_json_report(std::ostream& out, const Report& report) {
                           {"x", e.input.x},
                           {"x_candidate", candidate_order(e.input.x, report.stencil)},
                           {"status", status_name(o.status)}};
+    if (e.input.rest) {
+      detail["rest"] = *e.input.rest;
+      detail["rest_candidate"] = candidate_order(*e.input.rest, report.stencil);
+    }
     if (o.status == CandidateResult::Status::ok) {
-      detail["output"] = group_names[o.group];
+      detail["output"] = group_name(report.grading, o.group);
       detail["entry"] = o.entry;
       detail["expected"] = number(o.expected_value);
       detail["got"] = number(o.candidate_value);
@@ -248,6 +308,17 @@ void write_json_report(std::ostream& out, const Report& report) {
   j["pass"] = report.passed;
   j["tier"] = tier_name(report.tier);
   j["notes"] = report.notes;
+  if (!report.checks.empty()) {
+    j["consistency"] = nlohmann::json::array();
+    for (const ConsistencyCheck& c : report.checks)
+      j["consistency"].push_back({{"check", c.check},
+                                  {"id", c.case_id},
+                                  {"discrepancy", number(c.discrepancy)},
+                                  {"estimate", number(c.estimate)},
+                                  {"threshold", number(c.threshold)},
+                                  {"pass", c.pass},
+                                  {"detail", c.detail}});
+  }
   j["diagnosis"] = nlohmann::json::array();
   for (const Finding& f : report.diagnosis) j["diagnosis"].push_back(f.sentence);
   j["findings"] = nlohmann::json::array();

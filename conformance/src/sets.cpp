@@ -22,13 +22,6 @@ struct EmbeddedFile {
 };
 extern "C" const EmbeddedFile hinge_conformance_embedded[];
 
-// The text of an embedded file; empty when there is none (a deep category a set does not have).
-std::string_view embedded(const std::string& name) {
-  for (const EmbeddedFile* f = hinge_conformance_embedded; f->name != nullptr; ++f)
-    if (name == f->name) return {f->begin, static_cast<std::size_t>(f->end - f->begin)};
-  return {};
-}
-
 // One line of a hinge set: `{"id": "...", "category": "...", "x": [12], "theta": t, "grad": [12], "hess": [144],
 // "length": l, "scale": [3], "kappa": [3], "bits": b}`, the keys in that order.
 class LineReader {
@@ -126,7 +119,7 @@ class LineReader {
 
 // Appends the lines of the embedded file `name` (none if there is no such file), checking each one's category.
 void read_file(const std::string& name, const std::string& category, std::vector<Expected>& out) {
-  const std::string_view text = embedded(name);
+  const std::string_view text = embedded_file(name);
   std::size_t start = 0, line_number = 1;
   while (start < text.size()) {
     std::size_t stop = text.find('\n', start);
@@ -156,6 +149,13 @@ std::vector<Expected> load(Dtype dtype, Depth depth) {
 }
 
 }  // namespace
+
+// An embedded file's text; empty when there is none (a deep category a set does not have).
+std::string_view embedded_file(const std::string& name) {
+  for (const EmbeddedFile* f = hinge_conformance_embedded; f->name != nullptr; ++f)
+    if (name == f->name) return {f->begin, static_cast<std::size_t>(f->end - f->begin)};
+  return {};
+}
 
 const char* depth_name(Depth d) { return d == Depth::deep ? "deep" : "quick"; }
 

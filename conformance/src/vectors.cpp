@@ -3,6 +3,7 @@
 // records the enclosures' precision), in binary64 or binary32.
 #include <stdexcept>
 
+#include "hinge/conformance/energy_sets.hpp"
 #include "hinge/conformance/grading.hpp"
 #include "hinge/conformance/vectors.hpp"
 #include "hinge/core/errors.hpp"
@@ -89,6 +90,35 @@ struct SetWriter {
   }
 };
 
+// One line of energies/<energy>.jsonl (docs/conformance-format.md, "energies/"): the conditioning of a case for
+// k = 1 and the contract's weight, of psi, its gradient and exact Hessian, and of the Gauss-Newton Hessian.
+std::string energy_line(const EnergyCase& c, Model model) {
+  EnergyProblem problem;
+  problem.model = model;
+  EnergyParameters parameters;
+  parameters.model = model;
+  const Expected exact = energy_expected(c, problem, false);
+  problem.hessian = HessianKind::gauss_newton;
+  const Expected gauss_newton = energy_expected(c, problem, false);
+  const Conditioning k =
+      energy_conditioning(c.x, c.rest, parameters, false, exact.values.theta, exact.values.grad, exact.values.hess);
+  const Conditioning g = energy_conditioning(c.x, c.rest, parameters, true, gauss_newton.values.theta,
+                                             gauss_newton.values.grad, gauss_newton.values.hess);
+  std::string line = "{\"id\": " + io::json_string(c.id) + ", \"length\": ";
+  io::append_double(line, k.length);
+  line += ", \"scale\": ";
+  io::append_array(line, k.scale.data(), 3);
+  line += ", \"kappa\": ";
+  io::append_array(line, k.kappa.data(), 3);
+  line += ", \"scale_gauss_newton\": ";
+  io::append_double(line, g.scale[2]);
+  line += ", \"kappa_gauss_newton\": ";
+  io::append_double(line, g.kappa[2]);
+  return line + "}\n";
+}
+
+constexpr Model graded_energies[] = {Model::shells, Model::tan, Model::willmore, Model::bridson};
+
 }  // namespace
 
 VectorsSummary write_vectors(const std::filesystem::path& dir,
@@ -100,6 +130,7 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
   VectorsSummary summary;
   SetWriter w{dir, progress};
   w.total = quick.size() + float32.size() + deep.size() + deep32.size();
+  for (const Model model : graded_energies) w.total += energy_set(model).cases.size();
   std::size_t none = 0;
   summary.quick = w.write("hinges", categories(), quick, false, true, none, none);
   summary.float32 = w.write("hinges-float32", categories(), float32, true, true, none, none);
@@ -109,6 +140,17 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
   summary.deep_float32_invalid = summary.deep_float32_draws - deep32.size();
   summary.deep_float32 = w.write("deep-float32", hard_families(), deep32, true, false, summary.deep_float32_invalid,
                                  summary.deep_float32_uncertified);
+  fs::create_directories(dir / "energies");
+  for (const Model model : graded_energies) {
+    io::AtomicFile f((dir / "energies" / (std::string(model_name(model)) + ".jsonl")).string());
+    for (const EnergyCase& c : energy_set(model).cases) {
+      if (progress) progress(++w.done, w.total);
+      f.stream() << energy_line(c, model);
+      ++summary.energy_cases;
+    }
+    f.commit();
+  }
+
   io::AtomicFile index((dir / "meshes" / "meshes.jsonl").string());
   for (const MeshCase& m : meshes()) {
     write_mesh(dir / "meshes" / (m.name + ".obj"), m.deformed, "hinge conformance mesh " + m.name + " (deformed)");

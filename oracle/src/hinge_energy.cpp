@@ -55,12 +55,12 @@ PsiEnclosure psi(Model model, const Interval& k, const Interval& kd, const Inter
 }  // namespace
 
 HingeEnergy hinge_energy(Model model, const Interval& k, const Interval& kd, const ExactHinge& e, const ExactHinge& r,
-                         bool equal, bool with_gradient, bool with_hessian, bool gauss_newton) {
+                         bool equal, bool with_gradient, bool with_hessian, bool gauss_newton, const Interval* weight) {
   HingeEnergy out;
   const Interval rest_l0 = sqrt(Interval(r.s));
   const Angle rest_angle = angle(r, rest_l0);
   // Algorithm 1: a = 3 |e_bar|^2 / A_bar = 6 s_bar / (|N_bar| + |Nt_bar|) (true lengths: 2^-F cancels).
-  const Interval a = 6 * (Interval(r.s) / (sqrt(Interval(r.nn)) + sqrt(Interval(r.tt))));
+  const Interval a = weight ? *weight : 6 * (Interval(r.s) / (sqrt(Interval(r.nn)) + sqrt(Interval(r.tt))));
   const Interval l0 = sqrt(Interval(e.s));
   const PsiEnclosure p = psi(model, k, kd, a, angle(e, l0), rest_angle, equal);
   out.value = p.value;

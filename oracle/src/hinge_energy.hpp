@@ -22,7 +22,9 @@ struct HingeEnergy {
 // `equal`: theta == theta_bar, decided exactly (same_angle). The energy's stiffness k and viscous
 // coefficient kd (viscoelastic, with phi_hat = phi_bar). Throws DomainError where psi is infinite (tan at
 // +-pi), as the energies do. `deformed` needs its Hessian (exact_hinge(x, true)) when `with_hessian`.
+// `weight`: the hinge's weight w in place of Algorithm 1's a (nullptr: a, from the rest hinge).
 HingeEnergy hinge_energy(Model model, const Interval& k, const Interval& kd, const ExactHinge& deformed,
-                         const ExactHinge& rest, bool equal, bool with_gradient, bool with_hessian, bool gauss_newton);
+                         const ExactHinge& rest, bool equal, bool with_gradient, bool with_hessian, bool gauss_newton,
+                         const Interval* weight = nullptr);
 
 }  // namespace hinge::oracle::detail

@@ -42,7 +42,10 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
   if (options.binary32) throw std::invalid_argument("certified_mesh: Options::binary32 is for one hinge only");
   check_same_mesh(deformed, topology, "deformed");
   check_same_mesh(rest, topology, "rest");
-  if (options.fast_path)
+  const bool weighted = !options.weights.empty();
+  if (weighted && options.weights.size() != topology.hinges.size())
+    throw std::invalid_argument("certified_mesh: Options::weights needs one weight per hinge");
+  if (options.fast_path && !weighted)
     if (std::optional<CertifiedMesh> fast =
             detail::fast_mesh(deformed, rest, topology, parameters, request, options.gauss_newton))
       return *fast;
@@ -85,8 +88,10 @@ CertifiedMesh certified_mesh(const Mesh& deformed, const Mesh& rest, const Topol
     for (Index i = 0; i < hinge_count; ++i) {
       const Hinge& hinge = topology.hinges[i];
       for_hinge(topology, i, [&] {
-        const detail::HingeEnergy h = detail::hinge_energy(model, k, kd, exact[i], rest_exact[i], equal[i] != 0,
-                                                           want_grad || want_hess, want_hess, options.gauss_newton);
+        const Interval weight(weighted ? options.weights[static_cast<std::size_t>(i)] : 0.0);
+        const detail::HingeEnergy h =
+            detail::hinge_energy(model, k, kd, exact[i], rest_exact[i], equal[i] != 0, want_grad || want_hess,
+                                 want_hess, options.gauss_newton, weighted ? &weight : nullptr);
         energy += h.value;  // eq. (1)
         if (want_grad) {
           double squares = 0;

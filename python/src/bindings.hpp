@@ -20,5 +20,7 @@ decltype(auto) parsed(F&& f) {
 
 // The conformance kit's compiled part (conformance.cpp): the committed sets and the graded report.
 void bind_conformance(pybind11::module_& m);
+// The whole-mesh conformance's compiled part (mesh_conformance.cpp): certified mesh values and their comparison.
+void bind_mesh_conformance(pybind11::module_& m);
 
 }  // namespace hinge::python

@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "bindings.hpp"
+#include "hinge/conformance/consistency.hpp"
+#include "hinge/conformance/energy_report.hpp"
 #include "hinge/conformance/html_report.hpp"
 #include "hinge/conformance/report.hpp"
 #include "hinge/conformance/sets.hpp"
@@ -72,6 +74,131 @@ conf::Report grade(const std::string& candidate, const std::string& dtype, const
   return report;
 }
 
+// The set an energy name grades on ("custom": the shells set, whose pairs are all finite: only its
+// consistency base is used).
+const conf::EnergySet& set_of(const std::string& energy) {
+  return parsed([&]() -> const auto& { return conf::energy_set(parse_model(energy == "custom" ? "shells" : energy)); });
+}
+
+py::array_t<double> rows(const std::vector<std::array<double, 12>>& v) {
+  py::array_t<double> a({static_cast<py::ssize_t>(v.size()), py::ssize_t{12}});
+  for (std::size_t i = 0; i < v.size(); ++i) std::copy(v[i].begin(), v[i].end(), a.mutable_data() + 12 * i);
+  return a;
+}
+
+// (ids, categories, x (n, 12), rest (n, 12), left_out): the energy's graded pairs, the contract's order.
+py::tuple energy_set(const std::string& energy) {
+  const conf::EnergySet& set = set_of(energy);
+  py::list ids, categories;
+  std::vector<std::array<double, 12>> x, rest;
+  for (const conf::EnergyCase& c : set.cases) {
+    ids.append(c.id);
+    categories.append(c.category);
+    x.push_back(c.x);
+    rest.push_back(c.rest);
+  }
+  return py::make_tuple(ids, categories, rows(x), rows(rest), set.left_out);
+}
+
+std::vector<double> energy_weights(const std::string& energy, const std::string& weight) {
+  return parsed([&] { return conf::set_weights(set_of(energy), weight); });
+}
+
+// (x (m, 12), rest (m, 12), base): the consistency checks' probes in the contract's order, and the indices of
+// their base hinges in the energy's set.
+py::tuple consistency_probes(const std::string& energy, const std::string& dtype) {
+  const conf::EnergySet& set = set_of(energy);
+  const std::vector<std::size_t> base = conf::consistency_base(set);
+  std::vector<conf::EnergyCase> cases;
+  for (const std::size_t i : base) cases.push_back(set.cases[i]);
+  const conf::ConsistencyPlan plan = parsed([&] { return conf::consistency_plan(cases, conf::parse_dtype(dtype)); });
+  return py::make_tuple(rows(plan.x), rows(plan.rest), base);
+}
+
+// Grades a bending term: its outputs on the energy's set (the contract's order; status as in grade()) and on
+// the consistency probes (ok per probe), `weights` its w per case of the set (empty: the named weight).
+conf::Report energy_grade(const std::string& candidate, const std::string& energy, double k, const std::string& hessian,
+                          const std::string& weight, const std::vector<double>& weights, bool diagonal,
+                          const std::string& dtype, const std::array<bool, 3>& given, const conf::Stencil& stencil,
+                          const Array& values, const Array& grad, const Array& hess, const std::vector<int>& status,
+                          const std::vector<std::string>& errors, const std::vector<std::string>& notes,
+                          const Array& probe_values, const Array& probe_grad, const Array& probe_hess,
+                          const std::vector<bool>& probe_ok) {
+  const bool custom = energy == "custom";
+  const conf::EnergySet& set = set_of(energy);
+  conf::EnergyGrading eg;
+  eg.problem.model = parse_model(custom ? "shells" : energy);
+  eg.problem.k = k;
+  eg.problem.hessian = hessian == "gauss-newton" ? conf::HessianKind::gauss_newton : conf::HessianKind::exact;
+  eg.weight = weight;
+  eg.diagonal_blocks = diagonal;
+  eg.custom = custom;
+  conf::Grading grading;
+  grading.dtype = parsed([&] { return conf::parse_dtype(dtype); });
+  grading.given = given;
+  const std::vector<double> w = weights.empty() ? energy_weights(energy, weight) : weights;
+  if (w.size() != set.cases.size()) throw py::value_error("energy_grade: one weight per case of the set");
+
+  // The consistency checks on the probes.
+  const std::vector<std::size_t> base = conf::consistency_base(set);
+  std::vector<conf::EnergyCase> cases;
+  std::vector<double> c;
+  for (const std::size_t i : base) {
+    cases.push_back(set.cases[i]);
+    c.push_back(k * w[i]);
+  }
+  const conf::ConsistencyPlan plan = conf::consistency_plan(cases, grading.dtype);
+  const std::size_t m = plan.x.size();
+  if (static_cast<std::size_t>(probe_values.size()) != m || static_cast<std::size_t>(probe_grad.size()) != 12 * m ||
+      static_cast<std::size_t>(probe_hess.size()) != 144 * m || probe_ok.size() != m)
+    throw py::value_error("energy_grade: one row per consistency probe");
+  std::vector<conf::EnergyOutputs> outputs(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    outputs[i].ok = probe_ok[i];
+    outputs[i].energy = probe_values.data()[i];
+    std::copy_n(probe_grad.data() + 12 * i, 12, outputs[i].grad.begin());
+    std::copy_n(probe_hess.data() + 144 * i, 144, outputs[i].hess.begin());
+  }
+  conf::ConsistencyOptions options;
+  options.dtype = grading.dtype;
+  options.energy_given = given[0];
+  options.grad_given = given[1];
+  options.hess_given = given[2];
+  options.hessian_exact = eg.problem.hessian == conf::HessianKind::exact;
+  options.diagonal_blocks = diagonal;
+
+  std::vector<conf::Expected> expected;
+  std::vector<conf::CandidateResult> results;
+  if (!custom) {
+    const std::size_t n = set.cases.size();
+    if (static_cast<std::size_t>(values.size()) != n || static_cast<std::size_t>(grad.size()) != 12 * n ||
+        static_cast<std::size_t>(hess.size()) != 144 * n || status.size() != n || errors.size() != n)
+      throw py::value_error("energy_grade: one row per case of the set");
+    results.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      conf::CandidateResult& r = results[i];
+      if (status[i] < 0 || status[i] > 3) throw py::value_error("energy_grade: status must be 0..3");
+      r.status = static_cast<conf::CandidateResult::Status>(status[i]);
+      r.error = errors[i];
+      r.theta = values.data()[i];
+      std::copy_n(grad.data() + 12 * i, 12, r.grad.begin());
+      std::copy_n(hess.data() + 144 * i, 144, r.hess.begin());
+    }
+  }
+  py::gil_scoped_release release;
+  std::vector<conf::ConsistencyCheck> checks = conf::consistency_checks(plan, outputs, c, options);
+  if (!custom)
+    expected = parsed([&] {  // the contract's weight: the oracle's fast path; any other: its interval path
+      return conf::energy_expectations(set, eg.problem,
+                                       weight == "contract" && weights.empty() ? std::vector<double>{} : w,
+                                       grading.dtype, diagonal);
+    });
+  conf::Report report = conf::make_energy_report(candidate, set, std::move(expected), w, std::move(results), grading,
+                                                 eg, std::move(checks), stencil);
+  report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
+  return report;
+}
+
 }  // namespace
 
 void bind_conformance(py::module_& m) {
@@ -110,6 +237,13 @@ void bind_conformance(py::module_& m) {
           },
           "path"_a);
   m.def("conformance_set", &conformance_set, "dtype"_a, "depth"_a);
+  m.def("energy_set", &energy_set, "energy"_a);
+  m.def("energy_weights", &energy_weights, "energy"_a, "weight"_a);
+  m.def("energy_weight_names", &conf::weight_names);
+  m.def("consistency_probes", &consistency_probes, "energy"_a, "dtype"_a);
+  m.def("energy_grade", &energy_grade, "candidate"_a, "energy"_a, "k"_a, "hessian"_a, "weight"_a, "weights"_a,
+        "diagonal"_a, "dtype"_a, "given"_a, "stencil"_a, "values"_a, "grad"_a, "hess"_a, "status"_a, "errors"_a,
+        "notes"_a, "probe_values"_a, "probe_grad"_a, "probe_hess"_a, "probe_ok"_a);
   m.def("conformance_grade", &grade, "candidate"_a, "dtype"_a, "depth"_a, "given"_a, "stencil"_a, "theta"_a, "grad"_a,
         "hess"_a, "status"_a, "errors"_a, "notes"_a = std::vector<std::string>{});
 }

@@ -355,4 +355,5 @@ PYBIND11_MODULE(_hinge, m) {
   m.def("stream", &stream, "command"_a, "input"_a, "first_line"_a = 1, "method"_a = "reference", "scalar"_a = "double",
         "report_precision"_a = false, "start_bits"_a = defaults.start_bits, "max_bits"_a = defaults.max_bits);
   hinge::python::bind_conformance(m);
+  hinge::python::bind_mesh_conformance(m);
 }

@@ -1,7 +1,7 @@
 // hinge/conformance/consistency.hpp: the consistency checks of the conformance of bending energies
-// (/work/shared/spec/CONVENTIONS.md, "Conformance of bending energies (contract version 3)", bullet
-// "Consistency checks"; docs/conformance.md, "Bending energies"). They need no expected values, so they run
-// for every candidate, `custom` included: on well-shaped deformed hinges X (each with its rest hinge R),
+// (docs/energy-conformance.md, "Consistency checks"; docs/contract.md, "Conformance of bending energies"). They need no
+// expected values, so they run for every candidate, `custom` included: on well-shaped deformed hinges X (each with its
+// rest hinge R),
 //   - the gradient against Richardson-extrapolated central differences of the candidate's own energy,
 //   - the exact Hessian against Richardson-extrapolated central differences of its own gradient (not for a
 //     Gauss-Newton or projected Hessian),
@@ -48,8 +48,10 @@ struct EnergyOutputs {
 struct ConsistencyOptions {
   Dtype dtype = Dtype::float64;  // grading.hpp: the unit roundoff u of the estimates, the probes' format
   bool grad_given = true, hess_given = true;
-  bool hessian_exact = true;  // false (gauss-newton, projected): no Hessian-vs-gradient-differences check
-  bool energy_given = true;   // false: no gradient-vs-energy-differences check, no energy invariance check
+  bool hessian_exact = true;     // false (gauss-newton, projected): no Hessian-vs-gradient-differences check
+  bool energy_given = true;      // false: no gradient-vs-energy-differences check, no energy invariance check
+  bool diagonal_blocks = false;  // blocks="diagonal": the Hessian's entries outside its four 3 x 3 diagonal blocks
+                                 // are not the candidate's (zero): the difference check compares the blocks only
 };
 
 // The steps of the difference checks, h = 2^step_exponent(dtype) * 2^floor(log2 L), L the longest edge of X

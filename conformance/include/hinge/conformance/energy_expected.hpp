@@ -4,6 +4,8 @@
 // and the rest hinge R, as an Expected the grading takes (its theta slot holds psi).
 #pragma once
 
+#include <optional>
+
 #include "hinge/conformance/energy_inputs.hpp"
 #include "hinge/conformance/grading.hpp"
 #include "hinge/core/energy.hpp"
@@ -25,7 +27,15 @@ struct EnergyProblem {
 // numbers (oracle::energy_conditioning). Where psi is exactly zero, the energy group's scale is set so that
 // the policy's tolerance (base + c kappa, kappa = 1 there) allows exactly the contract's bound
 // |psi_candidate| <= c f''(theta_bar) (16 u (s_X + s_R))^2 / 2, s_X and s_R the theta scales L ||grad theta||
-// of X and R, with the default policy. Throws hinge::DomainError where psi is infinite (tan at +-pi).
-Expected energy_expected(const EnergyCase& c, const EnergyProblem& problem, bool conditioning = true);
+// of X and R, with the default policy. `weight`: the hinge's weight w in place of the contract's
+// a = 3 |e_bar|^2 / A_bar (taken exactly; the oracle's interval path). Throws hinge::DomainError where psi is
+// infinite (tan at +-pi).
+Expected energy_expected(const EnergyCase& c, const EnergyProblem& problem, bool conditioning = true,
+                         std::optional<double> weight = std::nullopt);
+
+// Where e's psi is exactly zero: its energy scale set (and kappa 1) so that the default policy allows exactly
+// the contract's bound above (energy_expected does this; for conditioning taken from elsewhere).
+void apply_zero_energy_bound(Expected& e, const EnergyCase& c, const EnergyProblem& problem,
+                             std::optional<double> weight = std::nullopt);
 
 }  // namespace hinge::conformance

@@ -16,6 +16,13 @@ struct EnergyCase {
   std::array<double, 12> x{}, rest{};
 };
 
+// A rest hinge's |e_bar| and the areas of its triangles (x0, x1, x2) and (x3, x2, x1), in double, computed from
+// the coordinate differences divided by the largest one (no square over- or underflows at any scale).
+struct RestShape {
+  double edge = 0, area0 = 0, area3 = 0;
+};
+RestShape rest_shape(const std::array<double, 12>& rest);
+
 // The kinds of rest hinge, in report order:
 //   flat        theta_bar = 0 exactly (the four points exactly coplanar, x0 and x3 on either side)
 //   obtuse      pi/2 < |theta_bar| <= pi - 0.05, either sign
@@ -26,7 +33,7 @@ struct EnergyCase {
 //               triangles' planes where that is exact, then scaled by a power of two and turned by a signed
 //               permutation of the axes (exact operations); the oracle's exact same_angle confirms it.
 // The rest hinges of the first four kinds vary their hinge edge's length, their areas and their altitudes
-// independently.
+// independently, and are brought to the deformed hinge's size by a power of two (exact).
 const std::vector<std::string>& rest_kinds();
 
 struct EnergyInputs {

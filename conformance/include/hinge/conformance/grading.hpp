@@ -20,8 +20,10 @@ using oracle::CertifiedMesh;
 using oracle::CertifiedTheta;
 using oracle::Conditioning;
 
-// The groups of outputs compared separately: theta, grad (12), hess (144).
+// The groups of outputs compared separately: theta, grad (12), hess (144); for a bending energy psi (named
+// "energy"), its gradient and Hessian.
 inline constexpr std::array<const char*, 3> group_names{"theta", "grad", "hess"};
+inline constexpr std::array<const char*, 3> energy_group_names{"energy", "grad", "hess"};
 
 struct Expected {
   Case input;
@@ -74,7 +76,10 @@ struct Grading {
   Policy policy;
   Dtype dtype = Dtype::float64;
   std::array<bool, 3> given{true, true, true};
+  bool energy = false;  // the outputs are a bending term's psi, gradient and Hessian (energy_report.hpp)
 };
+// The name of output group g as `grading` grades it ("theta" or "energy", "grad", "hess").
+const char* group_name(const Grading& grading, int g);
 
 struct CaseOutcome {
   std::string id, category;

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,10 +15,12 @@
 
 namespace hinge::conformance {
 
-// One hinge of the conformance set: "category/NN-tag".
+// One hinge of the conformance set: "category/NN-tag"; for the conformance of bending energies also its
+// rest hinge (energy_inputs.hpp).
 struct Case {
   std::string id, category;
   std::array<double, 12> x{};
+  std::optional<std::array<double, 12>> rest;
 };
 
 // The categories, in report order: well-shaped, rotations, scales, offsets, near-flat, near-folded,

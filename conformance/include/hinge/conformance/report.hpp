@@ -7,8 +7,10 @@
 #include <array>
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "hinge/conformance/consistency.hpp"
 #include "hinge/conformance/diagnosis.hpp"
 #include "hinge/conformance/grading.hpp"
 
@@ -39,6 +41,11 @@ struct Report {
   std::vector<CategorySummary> categories;
   std::vector<Finding> diagnosis;
   std::vector<std::string> notes;  // what else the reader should know ("the batch call raised ...")
+  // What the outputs were graded as, beyond the dtype and depth (energy_report.hpp: energy, weight, k,
+  // hessian, blocks), in the order shown.
+  std::vector<std::pair<std::string, std::string>> settings;
+  // Bending energies: the consistency checks (consistency.hpp), each one that fails failing the run.
+  std::vector<ConsistencyCheck> checks;
   bool passed = false;
   Tier tier = Tier::fail;  // the lowest category tier
 };

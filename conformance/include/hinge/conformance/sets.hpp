@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hinge/conformance/grading.hpp"
@@ -24,6 +25,9 @@ Depth parse_depth(const std::string&);  // std::invalid_argument naming the choi
 // the reference stays valid for the program's lifetime. Throws std::logic_error if a compiled-in file
 // does not parse (a build from a broken tree).
 const std::vector<Expected>& conformance_set(Dtype dtype, Depth depth);
+
+// The text of a compiled-in file ("energies/tan.jsonl"); empty when there is none.
+std::string_view embedded_file(const std::string& name);
 
 // The categories of a set, in report order: categories() (inputs.hpp); deep adds the hard families that
 // are not among them (folded, combined), in hard_families() order.

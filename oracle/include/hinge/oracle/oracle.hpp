@@ -46,6 +46,10 @@ struct Options {
   // certified_mesh only (mesh.hpp): the Hessian's Gauss-Newton part, sum over hinges of
   // psi'' grad theta grad theta^T (not clamped: psi'' may be negative), without psi' Hess theta.
   bool gauss_newton = false;
+  // certified_mesh only: each hinge's weight w_i in place of the contract's a = 3 |e_bar|^2 / A_bar, taken as
+  // the exact value of the double given (psi_i = k w_i f(theta, theta_bar); the conformance of named and
+  // callable weights). Empty: the contract's weight. One per hinge of the topology; the fast path is skipped.
+  std::vector<double> weights;
 };
 
 // Which stages a hinge's certification needed.

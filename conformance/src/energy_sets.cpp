@@ -1,0 +1,141 @@
+// The graded cases of the energy conformance and their expectations (hinge/conformance/energy_sets.hpp).
+#include "hinge/conformance/energy_sets.hpp"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+
+#include "hinge/core/errors.hpp"
+#include "hinge/core/mesh.hpp"
+#include "hinge/oracle/conditioning.hpp"
+#include "hinge/oracle/mesh.hpp"
+
+namespace hinge::conformance {
+namespace {
+
+// The committed conditioning of an energy's cases (energies/<energy>.jsonl): for k = 1 and the contract's
+// weight, that of psi, the gradient and the exact Hessian, and of the Gauss-Newton Hessian.
+struct CommittedConditioning {
+  oracle::Conditioning exact;
+  double scale_gauss_newton = 0, kappa_gauss_newton = 0;
+};
+const std::map<std::string, CommittedConditioning>& committed(Model model) {
+  static std::mutex mutex;
+  static std::map<Model, std::map<std::string, CommittedConditioning>> cache;
+  const std::lock_guard lock(mutex);
+  auto [it, fresh] = cache.try_emplace(model);
+  if (!fresh) return it->second;
+  const std::string name = "energies/" + std::string(model_name(model)) + ".jsonl";
+  const std::string_view text = embedded_file(name);
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(begin, end - begin);
+    begin = end + 1;
+    if (line.empty()) continue;
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_discarded()) throw std::logic_error("conformance set " + name + ": a line is not JSON");
+    CommittedConditioning c;
+    c.exact.length = j.at("length").get<double>();
+    c.exact.scale = j.at("scale").get<std::array<double, 3>>();
+    c.exact.kappa = j.at("kappa").get<std::array<double, 3>>();
+    c.scale_gauss_newton = j.at("scale_gauss_newton").get<double>();
+    c.kappa_gauss_newton = j.at("kappa_gauss_newton").get<double>();
+    it->second.emplace(j.at("id").get<std::string>(), c);
+  }
+  return it->second;
+}
+
+}  // namespace
+
+const EnergySet& energy_set(Model model, Depth depth) {
+  if (depth != Depth::quick) throw std::invalid_argument("the energy conformance offers depth \"quick\" only (yet)");
+  if (model == Model::viscoelastic) throw std::invalid_argument("the viscoelastic energy is not graded");
+  static std::mutex mutex;
+  static std::map<Model, EnergySet> cache;
+  const std::lock_guard lock(mutex);
+  auto [it, fresh] = cache.try_emplace(model);
+  if (!fresh) return it->second;
+  EnergyInputs inputs = energy_inputs(energy_per_category);
+  for (std::string& id : inputs.left_out) it->second.left_out.push_back(id + ": |theta - theta_bar| > pi");
+  EnergyProblem problem;
+  problem.model = model;
+  for (EnergyCase& c : inputs.cases) {
+    if (infinite_at_pi(model)) try {
+        const Mesh x = hinge_mesh(c.x), rest = hinge_mesh(c.rest);
+        EnergyParameters p;
+        p.model = model;
+        oracle::certified_mesh(x, rest, build_topology(x), p, want_energy);
+      } catch (const DomainError& e) {
+        it->second.left_out.push_back(c.id + ": " + e.what());
+        continue;
+      }
+    it->second.cases.push_back(std::move(c));
+  }
+  return it->second;
+}
+
+const std::vector<std::string>& weight_names() {
+  static const std::vector<std::string> names{"contract", "bridson", "edge-length", "unit"};
+  return names;
+}
+
+double named_weight(const std::string& name, const std::array<double, 12>& rest) {
+  const RestShape s = rest_shape(rest);
+  const double edge_over_area = s.edge / (s.area0 + s.area3);  // no |e_bar|^2 formed: it may overflow
+  if (name == "contract") return 3 * edge_over_area * s.edge;  // Discrete Shells: |e_bar| / h_bar_e
+  if (name == "bridson") return edge_over_area * s.edge / 2;   // |e_bar|^2 / (|N1| + |N2|)
+  if (name == "edge-length") return s.edge;
+  if (name == "unit") return 1;
+  std::string choices;
+  for (const std::string& n : weight_names()) choices += (choices.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown weight '" + name + "' (expected " + choices + ", or a callable)");
+}
+
+void keep_diagonal_blocks(double* hess) {
+  for (int row = 0; row < 12; ++row)
+    for (int col = 0; col < 12; ++col)
+      if (row / 3 != col / 3) hess[12 * row + col] = 0;
+}
+
+std::vector<Expected> energy_expectations(const EnergySet& set, const EnergyProblem& problem,
+                                          const std::vector<double>& weights, Dtype dtype, bool diagonal_blocks) {
+  if (dtype != Dtype::float64)
+    throw std::invalid_argument(
+        "the energy conformance offers dtype \"float64\" only (yet): its cases are not float32");
+  if (!weights.empty() && weights.size() != set.cases.size())
+    throw std::invalid_argument("energy_expectations: one weight per case");
+  const auto& table = committed(problem.model);
+  std::vector<Expected> out;
+  out.reserve(set.cases.size());
+  for (std::size_t i = 0; i < set.cases.size(); ++i) {
+    const EnergyCase& c = set.cases[i];
+    const auto found = table.find(c.id);
+    if (found == table.end())
+      throw std::logic_error("energies/" + std::string(model_name(problem.model)) + ".jsonl has no case " + c.id);
+    const std::optional<double> w = weights.empty() ? std::nullopt : std::optional<double>(weights[i]);
+    Expected e = energy_expected(c, problem, false, w);
+    const CommittedConditioning& k = found->second;
+    const double factor = problem.k * (w ? *w / named_weight("contract", c.rest) : 1.0);
+    e.conditioning = k.exact;
+    if (problem.hessian == HessianKind::gauss_newton) {
+      e.conditioning.scale[2] = k.scale_gauss_newton;
+      e.conditioning.kappa[2] = k.kappa_gauss_newton;
+    }
+    for (double& s : e.conditioning.scale) s *= std::fabs(factor);
+    if (e.values.theta == 0) apply_zero_energy_bound(e, c, problem, w);
+    if (diagonal_blocks) {
+      keep_diagonal_blocks(e.values.hess.data());
+      const double size = oracle::scaled_norm(e.values.hess.data(), 144);
+      e.conditioning.kappa[2] = size > 0 ? e.conditioning.scale[2] / size : 1.0;
+    }
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+}  // namespace hinge::conformance

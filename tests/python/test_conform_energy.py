@@ -1,0 +1,202 @@
+"""hinge.conform_energy (docs/energy-conformance.md): bending terms as simulators write them, right and with the
+mistakes their trackers report, each graded and, where wrong, diagnosed."""
+
+import json
+
+import numpy as np
+import pytest
+
+import hinge
+from bending_terms import bridson_term, contract_weight, edge_length, shells_term, tan_term, willmore_term
+
+
+def sentence(report):
+    return " ".join(report.diagnosis)
+
+
+def test_a_correct_tan_term_passes_with_its_consistency_checks():
+    r = hinge.conform_energy(tan_term())
+    assert r.passed, str(r)
+    assert r.tier in ("correctly-rounded", "faithful", "4u", "policy")
+    assert r.diagnosis == []
+    assert r.checks and all(c["pass"] for c in r.checks)
+    assert r.settings == {"energy": "tan", "weight": "contract", "k": "1", "hessian": "exact", "blocks": "full"}
+
+
+def test_every_rest_kind_is_a_category_and_the_left_out_pairs_are_counted():
+    r = hinge.conform_energy(tan_term())
+    kinds = {c.split("/")[1] for c in r.categories}
+    assert kinds == {"flat", "obtuse", "negative", "near-cut", "at-rest", "rest-angle"}
+    assert any("pairs left out, not graded" in n and "|theta - theta_bar| > pi" in n for n in r.notes)
+
+
+def test_a_weight_missing_the_3_fails_and_is_named():
+    r = hinge.conform_energy(tan_term(weight=lambda R: contract_weight(R) / 3))
+    assert not r.passed
+    assert "1/3 times the contract's" in sentence(r) and "the 3 of the contract's weight" in sentence(r)
+
+
+def test_an_extra_factor_of_the_rest_edge_length_fails_and_is_named():
+    r = hinge.conform_energy(tan_term(weight=lambda R: contract_weight(R) * edge_length(R)))
+    assert not r.passed
+    assert "extra factor |e_bar|" in sentence(r)
+
+
+def test_a_weight_not_divided_by_the_rest_edge_length_is_named():
+    r = hinge.conform_energy(tan_term(weight=lambda R: contract_weight(R) / edge_length(R)))
+    assert not r.passed
+    assert "misses a factor |e_bar|" in sentence(r)
+
+
+def test_a_gauss_newton_hessian_declared_exact_fails_and_passes_when_declared_so():
+    wrong = hinge.conform_energy(tan_term(gauss_newton=True))
+    assert not wrong.passed
+    assert "Gauss-Newton Hessian" in sentence(wrong) and "where the exact one was declared" in sentence(wrong)
+    assert not wrong.categories["well-shaped/flat"]["hess"]["max"] <= 1e6
+    right = hinge.conform_energy(tan_term(gauss_newton=True), hessian="gauss-newton")
+    assert right.passed, str(right)
+    assert all(c["check"] != "Hessian against differences of the gradient" for c in right.checks)
+
+
+def test_an_exact_hessian_declared_gauss_newton_is_named():
+    r = hinge.conform_energy(tan_term(), hessian="gauss-newton")
+    assert not r.passed
+    assert "the exact Hessian given where the Gauss-Newton one was declared" in sentence(r)
+
+
+def test_shells_with_rest_angles_in_0_2pi_fails_and_the_diagnosis_names_the_2pi():
+    r = hinge.conform_energy(
+        shells_term(rest_angle=lambda tb: np.where(tb < 0, tb + 2 * np.pi, tb)), energy="shells"
+    )
+    assert not r.passed
+    assert "[0, 2 pi)" in sentence(r)
+    assert r.categories["well-shaped/flat"]["tier"] != "fail"  # theta_bar = 0 is in both ranges
+
+
+@pytest.mark.parametrize(
+    "rest_angle, words",
+    [
+        (lambda tb: 0 * tb, "rest angle ignored"),
+        (lambda tb: -tb, "rest angle negated"),
+        (lambda tb: np.degrees(tb), "rest angle in degrees"),
+    ],
+)
+def test_a_wrong_rest_angle_is_named(rest_angle, words):
+    r = hinge.conform_energy(shells_term(rest_angle=rest_angle), energy="shells")
+    assert not r.passed
+    assert words in sentence(r)
+
+
+@pytest.mark.parametrize("energy, term", [("shells", shells_term), ("willmore", willmore_term), ("bridson", bridson_term)])
+def test_a_correct_shells_willmore_and_bridson_term_pass(energy, term):
+    r = hinge.conform_energy(term(), energy=energy)
+    assert r.passed, str(r)
+
+
+def test_a_term_in_its_own_vertex_order_passes_when_it_declares_it():
+    order = [0, 3, 1, 2]  # the candidate's vertex j is the contract's x_order[j]
+    columns = np.array([3 * order[j] + c for j in range(4) for c in range(3)])
+    inverse = np.argsort(columns)
+    contract = tan_term()
+
+    def vbd_term(X, R):  # receives and returns its own order
+        psi, g, H = contract(X[:, inverse], R[:, inverse])
+        return psi, g[:, columns], H[:, columns[:, None], columns[None, :]]
+
+    assert hinge.conform_energy(vbd_term, stencil=("x0", "x3", "x1", "x2")).passed
+    assert not hinge.conform_energy(vbd_term).passed
+
+
+def test_diagonal_blocks_grade_only_what_vertex_block_descent_computes():
+    contract = tan_term()
+
+    def diagonal_only(X, R):
+        psi, g, H = contract(X, R)
+        blocks = np.zeros_like(H)
+        for v in range(4):
+            blocks[:, 3 * v : 3 * v + 3, 3 * v : 3 * v + 3] = H[:, 3 * v : 3 * v + 3, 3 * v : 3 * v + 3]
+        return psi, g, blocks
+
+    r = hinge.conform_energy(diagonal_only, blocks="diagonal")
+    assert r.passed, str(r)
+    assert any("diagonal blocks were graded" in n for n in r.notes)
+    assert not hinge.conform_energy(diagonal_only).passed
+
+
+def test_named_and_callable_weights():
+    term = tan_term(weight=edge_length)
+    assert hinge.conform_energy(term, weight="edge-length").passed
+    assert hinge.conform_energy(term, weight=edge_length).passed
+    r = hinge.conform_energy(term)  # graded against the contract's weight
+    assert not r.passed
+
+
+def test_k_scales_the_term():
+    assert hinge.conform_energy(tan_term(k=2.5), k=2.5).passed
+    r = hinge.conform_energy(tan_term(k=2.5))
+    assert not r.passed and "5/2 times the contract's" in sentence(r)
+
+
+def test_a_custom_term_whose_gradient_is_1_percent_off_its_energy_fails_the_consistency_checks():
+    contract = tan_term()
+
+    def off(X, R):
+        psi, g, H = contract(X, R)
+        return psi, 1.01 * g, H
+
+    good = hinge.conform_energy(contract, energy="custom")
+    assert good.passed and good.tier is None and good.categories == {}
+    bad = hinge.conform_energy(off, energy="custom")
+    assert not bad.passed
+    failed = {c["check"] for c in bad.checks if not c["pass"]}
+    assert "gradient against differences of the energy" in failed
+
+
+def test_outputs_may_leave_out_the_hessian():
+    contract = tan_term()
+    r = hinge.conform_energy(lambda X, R: contract(X, R)[:2], outputs=("energy", "grad"))
+    assert r.passed, str(r)
+    assert all(v["hess"] == {"median": None, "max": None} for v in r.categories.values())
+
+
+def test_a_nan_is_missing_and_a_raising_batch_is_retried():
+    contract = tan_term()
+
+    def nan_on_flat(X, R):
+        psi, g, H = contract(X, R)
+        psi = psi.copy()
+        psi[0] = np.nan
+        return psi, g, H
+
+    r = hinge.conform_energy(nan_on_flat)
+    assert not r.passed and r.categories["well-shaped/flat"]["missing"] >= 1
+
+
+def test_the_json_report_carries_settings_and_checks():
+    j = json.loads(hinge.conform_energy(tan_term()).to_json())
+    assert j["given"] == ["energy", "grad", "hess"]
+    assert j["settings"]["energy"] == "tan"
+    assert {c["check"] for c in j["consistency"]} >= {"net force", "net torque", "Hessian symmetry"}
+    assert "rest" in j["categories"][0]["worst_case_detail"]
+
+
+@pytest.mark.parametrize(
+    "options",
+    [
+        {"energy": "quadratic"},
+        {"hessian": "projected"},
+        {"dtype": "float32"},
+        {"depth": "deep"},
+        {"energy": "viscoelastic"},
+        {"weight": "cotangent"},
+        {"weight": 3.0},
+        {"weight": lambda R: -np.ones(len(R))},
+        {"k": 0.0},
+        {"k": float("nan")},
+        {"blocks": "upper"},
+        {"outputs": ("theta",)},
+    ],
+)
+def test_bad_or_not_yet_offered_arguments_raise_value_error(options):
+    with pytest.raises(ValueError):
+        hinge.conform_energy(tan_term(), **options)
