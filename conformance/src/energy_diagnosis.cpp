@@ -86,16 +86,17 @@ class EnergyHypotheses {
         const double f = static_cast<double>(p) / q;
         const std::string ratio = q == 1 ? std::to_string(p) : std::to_string(p) + "/" + std::to_string(q);
         std::string change = "remove the factor " + ratio;
-        if (p == 1 && q == 3) change += " (the 3 of the contract's weight w = 3 |e_bar|^2 / A_bar is missing)";
+        if (p == 1 && q == 3) change += " (with the contract's weight w = 3 |e_bar|^2 / A_bar: its 3 is missing)";
         if (p == 1 && q == 2)
-          change += " (a 1/2 in front of the energy: the contract's psi = k w f has none; fold it into k)";
-        out.push_back(scaling("factor:" + ratio, "the term is " + ratio + " times the contract's on every hinge",
+          change += " (a 1/2 in front of the energy: psi = k w f has none; fold it into k or the weight)";
+        out.push_back(scaling("factor:" + ratio, "the term is " + ratio + " times the declared one on every hinge",
                               change, [f](std::size_t) { return f; }));
       }
     for (const int power : {1, -1, 2, -2}) {
       const double f = std::pow(180 / pi, power);
       const std::string name = "(180/pi)^" + std::to_string(power);
-      out.push_back(scaling("factor:" + name, "the term is " + name + " times the contract's on every hinge (degrees)",
+      out.push_back(scaling("factor:" + name,
+                            "the term is " + name + " times the declared one on every hinge (degrees)",
                             "measure the angles in radians", [f](std::size_t) { return f; }));
     }
     // A factor of the rest hinge.
@@ -103,25 +104,25 @@ class EnergyHypotheses {
     const auto area = [this](std::size_t i) { return data_[i].rest.area0 + data_[i].rest.area3; };
     const auto h0 = [this](std::size_t i) { return 2 * data_[i].rest.area0 / data_[i].rest.edge; };
     const auto h3 = [this](std::size_t i) { return 2 * data_[i].rest.area3 / data_[i].rest.edge; };
-    const std::string weight = "the contract's weight is w = 3 |e_bar|^2 / A_bar";
+    const std::string weight = ", or declare the weight the term uses (weight=: a name or a callable of R)";
     out.push_back(scaling("factor:edge", "the term has an extra factor |e_bar| (the rest hinge edge's length)",
-                          weight + "; remove the |e_bar|", edge));
+                          "remove the |e_bar|" + weight, edge));
     out.push_back(scaling("factor:1/edge", "the term misses a factor |e_bar| (divided by the rest edge length)",
-                          weight + "; multiply by |e_bar|", [edge](std::size_t i) { return 1 / edge(i); }));
-    out.push_back(scaling("factor:edge^2", "the term has an extra factor |e_bar|^2", weight + "; remove the |e_bar|^2",
+                          "multiply by |e_bar|" + weight, [edge](std::size_t i) { return 1 / edge(i); }));
+    out.push_back(scaling("factor:edge^2", "the term has an extra factor |e_bar|^2", "remove the |e_bar|^2" + weight,
                           [edge](std::size_t i) { return edge(i) * edge(i); }));
     out.push_back(scaling("factor:area", "the term has an extra factor A_bar (the rest triangles' area)",
-                          weight + "; remove the A_bar", area));
+                          "remove the A_bar" + weight, area));
     out.push_back(scaling("factor:1/area", "the term misses a factor A_bar (divided by the rest area once more)",
-                          weight + "; divide by A_bar once", [area](std::size_t i) { return 1 / area(i); }));
+                          "divide by A_bar once" + weight, [area](std::size_t i) { return 1 / area(i); }));
     out.push_back(scaling("factor:h0", "the term has an extra factor h0 (the rest altitude of x0 over the hinge edge)",
-                          weight + "; remove the altitude", h0));
+                          "remove the altitude" + weight, h0));
     out.push_back(scaling("factor:h3", "the term has an extra factor h3 (the rest altitude of x3 over the hinge edge)",
-                          weight + "; remove the altitude", h3));
+                          "remove the altitude" + weight, h3));
     out.push_back(scaling("factor:1/h0", "the term misses a factor h0 (divided by the rest altitude of x0)",
-                          weight + "; do not divide by the altitude", [h0](std::size_t i) { return 1 / h0(i); }));
+                          "do not divide by the altitude" + weight, [h0](std::size_t i) { return 1 / h0(i); }));
     out.push_back(scaling("factor:1/h3", "the term misses a factor h3 (divided by the rest altitude of x3)",
-                          weight + "; do not divide by the altitude", [h3](std::size_t i) { return 1 / h3(i); }));
+                          "do not divide by the altitude" + weight, [h3](std::size_t i) { return 1 / h3(i); }));
     return out;
   }
 

@@ -33,7 +33,7 @@ def test_every_rest_kind_is_a_category_and_the_left_out_pairs_are_counted():
 def test_a_weight_missing_the_3_fails_and_is_named():
     r = hinge.conform_energy(tan_term(weight=lambda R: contract_weight(R) / 3))
     assert not r.passed
-    assert "1/3 times the contract's" in sentence(r) and "the 3 of the contract's weight" in sentence(r)
+    assert "1/3 times the declared one" in sentence(r) and "its 3 is missing" in sentence(r)
 
 
 def test_an_extra_factor_of_the_rest_edge_length_fails_and_is_named():
@@ -134,7 +134,7 @@ def test_named_and_callable_weights():
 def test_k_scales_the_term():
     assert hinge.conform_energy(tan_term(k=2.5), k=2.5).passed
     r = hinge.conform_energy(tan_term(k=2.5))
-    assert not r.passed and "5/2 times the contract's" in sentence(r)
+    assert not r.passed and "5/2 times the declared one" in sentence(r)
 
 
 def test_a_custom_term_whose_gradient_is_1_percent_off_its_energy_fails_the_consistency_checks():
