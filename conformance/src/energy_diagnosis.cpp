@@ -50,18 +50,19 @@ class EnergyHypotheses {
   std::vector<Hypothesis> build() {
     std::vector<Hypothesis> out;
     const bool exact = problem_.hessian == HessianKind::exact;
-    // The Hessian treatment.
-    out.push_back(predicting(
-        exact ? "gauss-newton-given" : "exact-given",
-        exact ? "a Gauss-Newton Hessian (c f'' grad theta grad theta^T) given where the exact one "
-                "was declared"
-              : "the exact Hessian given where the Gauss-Newton one was declared",
-        exact ? "declare hessian=\"gauss-newton\" if that is what the solver wants, or add "
-                "c f' Hess theta"
-              : "declare hessian=\"exact\", or drop the term c f' Hess theta",
-        [](double tb) { return tb; }, exact));  // the other treatment: GN where exact was declared
+    // The Hessian treatment (not for quadratic: its Hessian is constant, with no Gauss-Newton one).
+    if (!problem_.quadratic)
+      out.push_back(predicting(
+          exact ? "gauss-newton-given" : "exact-given",
+          exact ? "a Gauss-Newton Hessian (c f'' grad theta grad theta^T) given where the exact one "
+                  "was declared"
+                : "the exact Hessian given where the Gauss-Newton one was declared",
+          exact ? "declare hessian=\"gauss-newton\" if that is what the solver wants, or add "
+                  "c f' Hess theta"
+                : "declare hessian=\"exact\", or drop the term c f' Hess theta",
+          [](double tb) { return tb; }, exact));  // the other treatment: GN where exact was declared
     // The rest angle.
-    const bool rest_angle = problem_.model != Model::willmore;  // willmore's psi has no theta_bar
+    const bool rest_angle = !problem_.quadratic && problem_.model != Model::willmore;  // no theta_bar in psi
     if (rest_angle) {
       out.push_back(predicting("rest-angle-ignored", "the rest angle ignored (theta_bar = 0: a force at rest)",
                                "compute theta_bar from the rest hinge R (with the contract's sign and (-pi, pi] "

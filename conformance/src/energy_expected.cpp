@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "hinge/conformance/energy_sets.hpp"
 #include "hinge/core/mesh.hpp"
 #include "hinge/oracle/conditioning.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
+#include "hinge/oracle/quadratic.hpp"
 
 namespace hinge::conformance {
 namespace {
@@ -20,6 +22,7 @@ double psi_second_at_rest(const std::array<double, 12>& rest, const EnergyProble
   HingeCoefficients<double> c;
   c.k = p.k;
   c.a = weight ? *weight : named_weight("contract", rest);  // Algorithm 1
+  if (p.quadratic) return 2 * p.k * c.a;                    // as shells: k a theta^2 to leading order
   c.theta_bar = theta_bar;
   c.phi_bar = 2 * std::tan(theta_bar / 2);
   const BendAngle<double> b{theta_bar, std::tan(theta_bar / 2), false};
@@ -28,8 +31,28 @@ double psi_second_at_rest(const std::array<double, 12>& rest, const EnergyProble
 
 }  // namespace
 
+std::string energy_name(const EnergyProblem& problem) {
+  return problem.quadratic ? "quadratic" : std::string(model_name(problem.model));
+}
+
 Expected energy_expected(const EnergyCase& c, const EnergyProblem& problem, bool conditioning,
                          std::optional<double> weight) {
+  if (problem.quadratic) {
+    if (weight || problem.hessian != HessianKind::exact)
+      throw std::invalid_argument("the quadratic energy takes no weight and has one Hessian (exact)");
+    const oracle::CertifiedEnergy q = oracle::certified_quadratic(c.x, c.rest, problem.k);
+    Expected e;
+    e.input = {c.id, c.category, c.x, c.rest};
+    e.values.theta = q.energy;
+    e.values.grad = q.grad;
+    e.values.hess = q.hess;
+    e.values.bits = q.bits;
+    e.values.uncertified = q.uncertified;
+    if (!conditioning) return e;
+    e.conditioning = oracle::quadratic_conditioning(c.x, c.rest, problem.k, q.energy, q.grad, q.hess);
+    apply_zero_energy_bound(e, c, problem, weight);
+    return e;
+  }
   const Mesh x = hinge_mesh(c.x), rest = hinge_mesh(c.rest);
   EnergyParameters parameters;
   parameters.model = problem.model;

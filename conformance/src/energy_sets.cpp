@@ -22,13 +22,13 @@ struct CommittedConditioning {
   oracle::Conditioning exact;
   double scale_gauss_newton = 0, kappa_gauss_newton = 0;
 };
-const std::map<std::string, CommittedConditioning>& committed(Model model) {
+const std::map<std::string, CommittedConditioning>& committed(const std::string& energy) {
   static std::mutex mutex;
-  static std::map<Model, std::map<std::string, CommittedConditioning>> cache;
+  static std::map<std::string, std::map<std::string, CommittedConditioning>> cache;
   const std::lock_guard lock(mutex);
-  auto [it, fresh] = cache.try_emplace(model);
+  auto [it, fresh] = cache.try_emplace(energy);
   if (!fresh) return it->second;
-  const std::string name = "energies/" + std::string(model_name(model)) + ".jsonl";
+  const std::string name = "energies/" + energy + ".jsonl";
   const std::string_view text = embedded_file(name);
   std::size_t begin = 0;
   while (begin < text.size()) {
@@ -43,8 +43,10 @@ const std::map<std::string, CommittedConditioning>& committed(Model model) {
     c.exact.length = j.at("length").get<double>();
     c.exact.scale = j.at("scale").get<std::array<double, 3>>();
     c.exact.kappa = j.at("kappa").get<std::array<double, 3>>();
-    c.scale_gauss_newton = j.at("scale_gauss_newton").get<double>();
-    c.kappa_gauss_newton = j.at("kappa_gauss_newton").get<double>();
+    if (j.contains("scale_gauss_newton")) {  // not for quadratic (one Hessian)
+      c.scale_gauss_newton = j.at("scale_gauss_newton").get<double>();
+      c.kappa_gauss_newton = j.at("kappa_gauss_newton").get<double>();
+    }
     it->second.emplace(j.at("id").get<std::string>(), c);
   }
   return it->second;
@@ -79,6 +81,34 @@ const EnergySet& energy_set(Model model, Depth depth) {
   return it->second;
 }
 
+const EnergySet& quadratic_set(Depth depth) {
+  if (depth != Depth::quick) throw std::invalid_argument("the energy conformance offers depth \"quick\" only (yet)");
+  static const EnergySet set = [] {
+    EnergySet out;
+    const EnergyInputs inputs = energy_inputs(energy_per_category);
+    std::vector<EnergyCase> flat, at_rest;
+    for (const EnergyCase& c : inputs.cases) {
+      const std::size_t slash = c.category.find('/');
+      if (c.category.substr(slash + 1) != "flat") continue;
+      flat.push_back(c);
+      const std::string deformed = c.category.substr(0, slash);
+      const std::string tag = c.id.substr(c.category.size() + 1);
+      at_rest.push_back({deformed + "/at-rest/" + tag, deformed + "/at-rest", c.rest, c.rest});
+    }
+    // In category order: each deformed category's flat pairs, then its at-rest ones.
+    for (const std::string& category : categories())
+      for (const auto* list : {&flat, &at_rest})
+        for (const EnergyCase& c : *list)
+          if (c.category.starts_with(category + "/")) out.cases.push_back(c);
+    return out;
+  }();
+  return set;
+}
+
+const EnergySet& energy_set_of(const EnergyProblem& problem, Depth depth) {
+  return problem.quadratic ? quadratic_set(depth) : energy_set(problem.model, depth);
+}
+
 const std::vector<std::string>& weight_names() {
   static const std::vector<std::string> names{"contract", "bridson", "edge-length", "unit"};
   return names;
@@ -109,14 +139,15 @@ std::vector<Expected> energy_expectations(const EnergySet& set, const EnergyProb
         "the energy conformance offers dtype \"float64\" only (yet): its cases are not float32");
   if (!weights.empty() && weights.size() != set.cases.size())
     throw std::invalid_argument("energy_expectations: one weight per case");
-  const auto& table = committed(problem.model);
+  if (problem.quadratic && !weights.empty()) throw std::invalid_argument("the quadratic energy takes no weight");
+  const std::string energy = energy_name(problem);
+  const auto& table = committed(energy);
   std::vector<Expected> out;
   out.reserve(set.cases.size());
   for (std::size_t i = 0; i < set.cases.size(); ++i) {
     const EnergyCase& c = set.cases[i];
     const auto found = table.find(c.id);
-    if (found == table.end())
-      throw std::logic_error("energies/" + std::string(model_name(problem.model)) + ".jsonl has no case " + c.id);
+    if (found == table.end()) throw std::logic_error("energies/" + energy + ".jsonl has no case " + c.id);
     const std::optional<double> w = weights.empty() ? std::nullopt : std::optional<double>(weights[i]);
     Expected e = energy_expected(c, problem, false, w);
     const CommittedConditioning& k = found->second;

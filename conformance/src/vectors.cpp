@@ -119,6 +119,21 @@ std::string energy_line(const EnergyCase& c, Model model) {
 
 constexpr Model graded_energies[] = {Model::shells, Model::tan, Model::willmore, Model::bridson};
 
+// The same for the quadratic energy (no Gauss-Newton Hessian: its keys are left out).
+std::string quadratic_line(const EnergyCase& c) {
+  EnergyProblem problem;
+  problem.quadratic = true;
+  const Expected e = energy_expected(c, problem, false);
+  const Conditioning k = quadratic_conditioning(c.x, c.rest, 1.0, e.values.theta, e.values.grad, e.values.hess);
+  std::string line = "{\"id\": " + io::json_string(c.id) + ", \"length\": ";
+  io::append_double(line, k.length);
+  line += ", \"scale\": ";
+  io::append_array(line, k.scale.data(), 3);
+  line += ", \"kappa\": ";
+  io::append_array(line, k.kappa.data(), 3);
+  return line + "}\n";
+}
+
 }  // namespace
 
 VectorsSummary write_vectors(const std::filesystem::path& dir,
@@ -131,6 +146,7 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
   SetWriter w{dir, progress};
   w.total = quick.size() + float32.size() + deep.size() + deep32.size();
   for (const Model model : graded_energies) w.total += energy_set(model).cases.size();
+  w.total += quadratic_set().cases.size();
   std::size_t none = 0;
   summary.quick = w.write("hinges", categories(), quick, false, true, none, none);
   summary.float32 = w.write("hinges-float32", categories(), float32, true, true, none, none);
@@ -146,6 +162,15 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
     for (const EnergyCase& c : energy_set(model).cases) {
       if (progress) progress(++w.done, w.total);
       f.stream() << energy_line(c, model);
+      ++summary.energy_cases;
+    }
+    f.commit();
+  }
+  {
+    io::AtomicFile f((dir / "energies" / "quadratic.jsonl").string());
+    for (const EnergyCase& c : quadratic_set().cases) {
+      if (progress) progress(++w.done, w.total);
+      f.stream() << quadratic_line(c);
       ++summary.energy_cases;
     }
     f.commit();

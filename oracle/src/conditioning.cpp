@@ -8,6 +8,7 @@
 #include "hinge_energy.hpp"
 #include "hinge_intervals.hpp"
 #include "interval.hpp"
+#include "quadratic_enclosure.hpp"
 
 namespace hinge::oracle {
 namespace {
@@ -68,8 +69,9 @@ double third_derivative_scale(const ScaledHinge& s, const Int& longest_squared, 
 // central differences of psi, its gradient and Hessian, summed in squares per output group.
 class EnergyDifferences {
  public:
-  EnergyDifferences(const ScaledHinge& x, const ScaledHinge& rest, const EnergyParameters& p, bool gauss_newton)
-      : x_(x), rest_(rest), p_(p), gauss_newton_(gauss_newton) {}
+  EnergyDifferences(const ScaledHinge& x, const ScaledHinge& rest, const EnergyParameters& p, bool gauss_newton,
+                    bool quadratic = false)
+      : x_(x), rest_(rest), p_(p), gauss_newton_(gauss_newton), quadratic_(quadratic) {}
 
   // sum over the coordinates of side `which` (0: X, 1: R), refined by `extra` bits, of the squared
   // derivatives of each output group, added to `sums`.
@@ -96,6 +98,10 @@ class EnergyDifferences {
 
  private:
   detail::HingeEnergy evaluate(int which, const ScaledHinge& perturbed) const {
+    if (quadratic_) {  // quadratic.hpp: a polynomial in X with the rest hinge's cotangent weights
+      const ScaledHinge& rest = which == 1 ? perturbed : rest_;
+      return detail::quadratic_enclosure(which == 0 ? perturbed : x_, rest, exact_hinge(rest, false), Interval(p_.k));
+    }
     const ExactHinge deformed = exact_hinge(which == 0 ? perturbed : x_, true);
     const ExactHinge rest = exact_hinge(which == 1 ? perturbed : rest_, false);
     return detail::hinge_energy(p_.model, Interval(p_.k), Interval(p_.k_d_over_dt), deformed, rest,
@@ -104,7 +110,7 @@ class EnergyDifferences {
 
   const ScaledHinge &x_, &rest_;
   const EnergyParameters& p_;
-  bool gauss_newton_;
+  bool gauss_newton_, quadratic_;
 };
 
 // The refinement that makes one unit of h's integers at most 2^-100 of its longest edge.
@@ -115,19 +121,22 @@ unsigned long refinement(const Int& longest_squared) {
 
 }  // namespace
 
-Conditioning energy_conditioning(const std::array<double, 12>& x, const std::array<double, 12>& rest,
-                                 const EnergyParameters& parameters, bool gauss_newton, double energy,
-                                 const std::array<double, 12>& grad, const std::array<double, 144>& hess) {
+namespace {
+
+Conditioning conditioning_of(const std::array<double, 12>& x, const std::array<double, 12>& rest,
+                             const EnergyParameters& parameters, bool gauss_newton, bool quadratic, double energy,
+                             const std::array<double, 12>& grad, const std::array<double, 144>& hess) {
   const ScaledHinge sx = scale_exactly(x), sr = scale_exactly(rest);
   const ExactHinge r = exact_hinge(sr, false);
-  if (infinite_at_pi(parameters.model) && sgn(r.Y) == 0 && sgn(r.X) < 0) throw_folded_rest(parameters.model);
+  if (!quadratic && infinite_at_pi(parameters.model) && sgn(r.Y) == 0 && sgn(r.X) < 0)
+    throw_folded_rest(parameters.model);
   Int longest_x, longest_r;
   Conditioning k;
   k.length = std::max(longest_edge(sx, longest_x), longest_edge(sr, longest_r));
   detail::WorkingPrecision precision(320);
   std::array<Real, 3> sums{Real(320), Real(320), Real(320)};
   for (Real& s : sums) mpfr_set_ui(s.get(), 0, MPFR_RNDN);
-  const EnergyDifferences differences(sx, sr, parameters, gauss_newton);
+  const EnergyDifferences differences(sx, sr, parameters, gauss_newton, quadratic);
   differences.add(0, refinement(longest_x), sums);
   differences.add(1, refinement(longest_r), sums);
   const double sizes[3] = {scaled_norm(&energy, 1), scaled_norm(grad.data(), 12), scaled_norm(hess.data(), 144)};
@@ -138,6 +147,22 @@ Conditioning energy_conditioning(const std::array<double, 12>& x, const std::arr
     k.kappa[g] = sizes[g] == 0 ? 1.0 : k.scale[g] / sizes[g];
   }
   return k;
+}
+
+}  // namespace
+
+Conditioning energy_conditioning(const std::array<double, 12>& x, const std::array<double, 12>& rest,
+                                 const EnergyParameters& parameters, bool gauss_newton, double energy,
+                                 const std::array<double, 12>& grad, const std::array<double, 144>& hess) {
+  return conditioning_of(x, rest, parameters, gauss_newton, false, energy, grad, hess);
+}
+
+Conditioning quadratic_conditioning(const std::array<double, 12>& x, const std::array<double, 12>& rest, double k,
+                                    double energy, const std::array<double, 12>& grad,
+                                    const std::array<double, 144>& hess) {
+  EnergyParameters parameters;
+  parameters.k = k;
+  return conditioning_of(x, rest, parameters, false, true, energy, grad, hess);
 }
 
 double scaled_norm(const double* v, std::size_t n) {

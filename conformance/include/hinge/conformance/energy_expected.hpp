@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "hinge/conformance/energy_inputs.hpp"
 #include "hinge/conformance/grading.hpp"
@@ -20,14 +21,19 @@ struct EnergyProblem {
   Model model = Model::tan;  // shells, tan, willmore, bridson (the contract's weight: a = 3 |e_bar|^2 / A_bar)
   double k = 1;
   HessianKind hessian = HessianKind::exact;
+  // The isometric bending term of oracle/quadratic.hpp instead (model unused; no weight, exact Hessian only).
+  bool quadratic = false;
 };
+// "shells", ..., or "quadratic".
+std::string energy_name(const EnergyProblem& problem);
 
 // The certified psi (in values.theta), gradient and Hessian of `c` (oracle::certified_mesh on the hinge's two
 // triangles, each output the double nearest the exact value), and, with `conditioning`, their condition
 // numbers (oracle::energy_conditioning). Where psi is exactly zero, the energy group's scale is set so that
 // the policy's tolerance (base + c kappa, kappa = 1 there) allows exactly the contract's bound
 // |psi_candidate| <= c f''(theta_bar) (16 u (s_X + s_R))^2 / 2, s_X and s_R the theta scales L ||grad theta||
-// of X and R, with the default policy. `weight`: the hinge's weight w in place of the contract's
+// of X and R, with the default policy (for quadratic, whose psi is not a function of theta, with the shells
+// energy's psi'' = 2 k a: both are k a theta^2 to leading order on isometric bends). `weight`: the hinge's weight w in place of the contract's
 // a = 3 |e_bar|^2 / A_bar (taken exactly; the oracle's interval path). Throws hinge::DomainError where psi is
 // infinite (tan at +-pi).
 Expected energy_expected(const EnergyCase& c, const EnergyProblem& problem, bool conditioning = true,

@@ -24,6 +24,11 @@ struct EnergySet {
   std::vector<std::string> left_out;
 };
 const EnergySet& energy_set(Model model, Depth depth = Depth::quick);
+// The quadratic energy's pairs: each deformed hinge of energy_set's with its flat rest hinge (DEFORMED/flat),
+// and that rest hinge at rest (DEFORMED/at-rest: X = R, flat); nothing is left out (theta_bar = 0).
+const EnergySet& quadratic_set(Depth depth = Depth::quick);
+// The set of `problem`'s energy.
+const EnergySet& energy_set_of(const EnergyProblem& problem, Depth depth = Depth::quick);
 
 // The weights a simulator's bending term may use in place of the contract's (docs/energy-conformance.md,
 // "Weights", with their sources): "contract" (3 |e_bar|^2 / A_bar, Grinspun et al. 2003), "bridson"

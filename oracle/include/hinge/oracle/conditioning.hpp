@@ -42,6 +42,11 @@ Conditioning energy_conditioning(const std::array<double, 12>& x, const std::arr
                                  const EnergyParameters& parameters, bool gauss_newton, double energy,
                                  const std::array<double, 12>& grad, const std::array<double, 144>& hess);
 
+// The same for the isometric bending term of quadratic.hpp (stiffness k; its Hessian is constant in X).
+Conditioning quadratic_conditioning(const std::array<double, 12>& x, const std::array<double, 12>& rest, double k,
+                                    double energy, const std::array<double, 12>& grad,
+                                    const std::array<double, 144>& hess);
+
 // ||v||_2 without overflow or underflow: scaled by the largest magnitude, in a fixed order of operations;
 // NaN when an entry is.
 double scaled_norm(const double* v, std::size_t n);
