@@ -5,8 +5,21 @@
 //   hinge conform --method M [--scalar S] [--save FILE]          one of hinge eval's methods, in process
 //   hinge conform --mesh X.obj [--rest R.obj] --energy E --k K --hessian H.mtx [--gradient G.txt]
 //   hinge conform --write-vectors DIR                            regenerate conformance/ (bit for bit)
-// Exit status: 0 within the tolerance policy everywhere, 1 not, 2 usage error or unreadable candidate.
-// The numerics (certified values, conditioning, policy, comparisons, report) are hinge::conformance's.
+// A bending term psi = k w f(theta, theta_bar) (docs/energy-conformance-cli.md): --energy E without --mesh,
+//   E one of shells, tan, willmore, bridson, custom (the consistency checks only), with exactly one of
+//   hinge conform --energy E [--weight W] [--k K] [--hessian-kind exact|gauss-newton] ...
+//     --inputs [--output FILE]       the graded pairs {"id", "category", "x", "rest"}, then the consistency
+//                                    probes (ids "consistency/<base id>/<n>", category "consistency")
+//     --candidate FILE               lines {"id", "energy", "grad", "hess"} (or {"id", "error"}) for those ids;
+//                                    without the probes' lines the consistency checks are not evaluated: FAIL
+//     --plugin LIB.so [--symbol NAME] [--save FILE]   hinge_energy_candidate (hinge/candidate.h), on the pairs
+//                                    and the probes, in a child process as for theta
+//   with [--json FILE] [--report F.html] [--case-timeout S] [--verbose]; W one of contract, bridson,
+//   edge-length, unit. Not offered yet (usage errors): energy quadratic, --hessian-kind projected, --depth deep.
+// Exit status: 0 within the tolerance policy everywhere (and every consistency check passes), 1 not, 2 usage
+// error, unreadable candidate or a plugin that cannot be loaded.
+// The numerics (certified values, conditioning, policy, comparisons, consistency checks, report) are
+// hinge::conformance's.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +28,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "hinge/conformance/energy_report.hpp"
 #include "hinge/conformance/html_report.hpp"
 #include "hinge/conformance/plugin.hpp"
 #include "hinge/conformance/report.hpp"
@@ -23,6 +37,7 @@
 #include "hinge/core/bending_problem.hpp"
 #include "hinge/core/errors.hpp"
 #include "hinge/io/atomic_file.hpp"
+#include "hinge/io/energy_lines.hpp"
 #include "hinge/io/eval_output.hpp"
 #include "hinge/io/jsonl.hpp"
 #include "hinge/io/matrix_market.hpp"
@@ -39,16 +54,18 @@ namespace conf = conformance;
 
 struct ConformOptions {
   bool inputs = false, verbose = false;
-  std::string output, candidate, plugin, symbol = "hinge_candidate", save, write_vectors, method, scalar = "double";
+  std::string output, candidate, plugin, save, write_vectors, method, scalar = "double";
+  std::string symbol;  // --symbol; empty: hinge_candidate, or hinge_energy_candidate with --energy
   std::string json;    // --json FILE: the report as JSON
   std::string report;  // --report FILE.html: the report as a self-contained page
   std::string depth = "quick";
   std::vector<std::string> categories;
   conf::Policy policy;
   double case_timeout = 10;  // seconds, --plugin
-  // mesh mode
+  // mesh mode; --energy without --mesh: a bending term (weight and Hessian kind for it alone)
   std::string mesh, rest, energy, hessian, gradient;
   double k = 1;
+  std::string weight = "contract", hessian_kind = "exact";
 };
 
 // A usage error or an unreadable candidate: exit status 2.
@@ -71,10 +88,10 @@ std::vector<conf::Expected> selected_expected(const ConformOptions& o) {
   return some;
 }
 
-// One line per case: errors and tolerances (--verbose).
-void print_cases(std::ostream& out, const std::vector<conf::CaseOutcome>& outcomes) {
+// One line per case: errors and tolerances (--verbose); `first` names the first output group (theta, energy).
+void print_cases(std::ostream& out, const std::vector<conf::CaseOutcome>& outcomes, const char* first = "theta") {
   char line[512];
-  std::snprintf(line, sizeof line, "%-44s %-4s %10s %10s %10s %10s %10s %10s\n", "case", "", "theta", "(tol)", "grad",
+  std::snprintf(line, sizeof line, "%-44s %-4s %10s %10s %10s %10s %10s %10s\n", "case", "", first, "(tol)", "grad",
                 "(tol)", "hess", "(tol)");
   out << line;
   for (const auto& o : outcomes) {
@@ -107,6 +124,39 @@ conf::CandidateResult method_result(methods::Method method, const ScalarType& sc
   return r;
 }
 
+// The text report on standard output, the JSON and HTML reports if asked, the cases the plugin did not survive;
+// the exit status.
+int emit(const conf::Report& report, std::optional<io::AtomicFile>& json, std::optional<io::AtomicFile>& html,
+         const std::vector<std::string>& not_survived) {
+  conf::print_report(std::cout, report);
+  if (json) {
+    conf::write_json_report(json->stream(), report);
+    json->commit();
+  }
+  if (html) {
+    conf::write_html_report(html->stream(), report);
+    html->commit();
+  }
+  if (!not_survived.empty()) {
+    std::cout << "\nthe plugin did not survive " << not_survived.size()
+              << " case(s) (each failed; its process was started again):\n";
+    for (const auto& line : not_survived) std::cout << "  " << line << "\n";
+  }
+  return report.passed && not_survived.empty() ? exit_done : exit_invalid_input;
+}
+
+// The output files, opened before the candidate runs: one that cannot be written is a usage error.
+void open_outputs(const ConformOptions& o, std::optional<io::AtomicFile>& saved, std::optional<io::AtomicFile>& json,
+                  std::optional<io::AtomicFile>& html) {
+  try {
+    if (!o.save.empty()) saved.emplace(o.save);
+    if (!o.json.empty()) json.emplace(o.json);
+    if (!o.report.empty()) html.emplace(o.report);
+  } catch (const std::runtime_error& e) {
+    throw Unusable(e.what());
+  }
+}
+
 int run_cases(const ConformOptions& o) {
   std::optional<conf::Plugin> plugin;
   std::optional<std::pair<methods::Method, ScalarType>> method;
@@ -120,8 +170,9 @@ int run_cases(const ConformOptions& o) {
       method.emplace(methods::parse_method(o.method), parse_scalar_type(o.scalar));  // std::invalid_argument: usage
       name = "hinge eval --method " + o.method + " --scalar " + o.scalar;
     } else {
-      plugin.emplace(o.plugin, o.symbol, o.case_timeout);
-      name = "plugin " + o.plugin + " (" + o.symbol + ")";
+      const std::string symbol = o.symbol.empty() ? "hinge_candidate" : o.symbol;
+      plugin.emplace(o.plugin, symbol, o.case_timeout);
+      name = "plugin " + o.plugin + " (" + symbol + ")";
     }
   } catch (const InputError& e) {
     throw Unusable(e.what());
@@ -129,13 +180,7 @@ int run_cases(const ConformOptions& o) {
     throw Unusable(e.what());
   }
   std::optional<io::AtomicFile> saved, json, html;
-  try {  // an output that cannot be written is a usage error, found before the candidate runs
-    if (!o.save.empty()) saved.emplace(o.save);
-    if (!o.json.empty()) json.emplace(o.json);
-    if (!o.report.empty()) html.emplace(o.report);
-  } catch (const std::runtime_error& e) {
-    throw Unusable(e.what());
-  }
+  open_outputs(o, saved, json, html);
 
   std::vector<conf::Expected> cases = selected_expected(o);
   std::vector<conf::CandidateResult> results;
@@ -167,21 +212,7 @@ int run_cases(const ConformOptions& o) {
   const conf::Report report =
       conf::make_report(name, std::move(cases), std::move(results), grading, conf::contract_stencil, o.depth);
   if (o.verbose) print_cases(std::cout, report.outcomes);
-  conf::print_report(std::cout, report);
-  if (json) {
-    conf::write_json_report(json->stream(), report);
-    json->commit();
-  }
-  if (html) {
-    conf::write_html_report(html->stream(), report);
-    html->commit();
-  }
-  if (!not_survived.empty()) {
-    std::cout << "\nthe plugin did not survive " << not_survived.size()
-              << " case(s) (each failed; its process was started again):\n";
-    for (const auto& line : not_survived) std::cout << "  " << line << "\n";
-  }
-  return report.passed && not_survived.empty() ? exit_done : exit_invalid_input;
+  return emit(report, json, html, not_survived);
 }
 
 int write_inputs(const ConformOptions& o) {
@@ -193,6 +224,137 @@ int write_inputs(const ConformOptions& o) {
   out->flush();
   if (file) file->commit();
   return *out ? exit_done : exit_invalid_input;
+}
+
+// --- A bending term (--energy without --mesh; docs/energy-conformance-cli.md) ---
+
+// What the options name: the grading, its set, the consistency probes and their ids. A bad name is a usage error.
+struct EnergyRun {
+  conf::EnergyGrading grading;
+  const conf::EnergySet* set = nullptr;
+  conf::ConsistencyPlan plan;
+  std::vector<std::string> probe_ids;
+};
+
+EnergyRun energy_run(const ConformOptions& o) {
+  EnergyRun run;
+  try {
+    // Not through energy_grading alone: a quadratic term is graded on its own set, which this route does not read.
+    if (o.energy == "quadratic")
+      throw std::invalid_argument("energy \"quadratic\" is not offered by the command line yet");
+    const std::vector<std::string>& weights = conf::weight_names();
+    if (std::find(weights.begin(), weights.end(), o.weight) == weights.end()) {
+      std::string choices;
+      for (const std::string& w : weights) {
+        if (!choices.empty()) choices += ", ";
+        choices += w;
+      }
+      std::string why = "unknown weight \"";
+      why += o.weight;
+      why += "\" (choices: ";
+      why += choices;
+      why += ")";
+      throw std::invalid_argument(why);
+    }
+    run.grading = conf::energy_grading(o.energy, o.weight, o.k, o.hessian_kind);
+    run.set = &conf::energy_set(run.grading.problem.model, conf::parse_depth(o.depth));
+  } catch (const std::invalid_argument& e) {
+    throw Unusable(e.what());
+  }
+  run.plan = conf::energy_consistency_plan(*run.set, conf::Dtype::float64);
+  run.probe_ids = conf::consistency_probe_ids(run.plan);
+  return run;
+}
+
+// --inputs: the graded pairs (none for custom), then the consistency probes.
+int write_energy_inputs(const ConformOptions& o, const EnergyRun& run) {
+  std::optional<io::AtomicFile> file;
+  std::ostream* out = &std::cout;
+  if (!o.output.empty() && o.output != "-") out = &file.emplace(o.output).stream();
+  if (!run.grading.custom)
+    for (const conf::EnergyCase& c : run.set->cases)
+      *out << io::energy_input_line(c.id, c.category, c.x, c.rest) << '\n';
+  for (std::size_t p = 0; p < run.plan.x.size(); ++p)
+    *out << io::energy_input_line(run.probe_ids[p], conf::consistency_category, run.plan.x[p], run.plan.rest[p])
+         << '\n';
+  out->flush();
+  if (file) file->commit();
+  return *out ? exit_done : exit_invalid_input;
+}
+
+// --candidate or --plugin: the candidate on the graded pairs and the probes, graded by conf::grade_energy.
+int run_energy(const ConformOptions& o) {
+  const EnergyRun run = energy_run(o);
+  if (o.inputs) return write_energy_inputs(o, run);
+  std::optional<conf::Plugin> plugin;
+  std::map<std::string, io::EnergyOutput> file;
+  std::string name;
+  try {
+    if (!o.candidate.empty()) {
+      file = io::read_energy_outputs(o.candidate);
+      name = "candidate " + o.candidate;
+    } else {
+      const std::string symbol = o.symbol.empty() ? "hinge_energy_candidate" : o.symbol;
+      plugin.emplace(o.plugin, symbol, o.case_timeout, conf::PluginKind::energy);
+      name = "plugin " + o.plugin + " (" + symbol + ")";
+    }
+  } catch (const InputError& e) {
+    throw Unusable(e.what());
+  } catch (const conf::PluginError& e) {
+    throw Unusable(e.what());
+  }
+  std::optional<io::AtomicFile> saved, json, html;
+  open_outputs(o, saved, json, html);
+
+  const std::vector<conf::EnergyCase>& cases = run.set->cases;
+  const std::size_t total = (run.grading.custom ? 0 : cases.size()) + run.plan.x.size();
+  std::vector<std::string> not_survived;  // cases on which the plugin crashed or timed out
+  std::size_t done = 0, found = 0;
+  Progress progress("hinge conform: cases and probes", total);
+  const auto evaluate = [&](const std::string& id, const std::array<double, 12>& x,
+                            const std::array<double, 12>& rest) {
+    conf::CandidateResult r;
+    if (plugin) {
+      r = (*plugin)(x, rest);
+      if (conf::Plugin::fatal(r)) not_survived.push_back(id + ": " + r.error);
+    } else if (auto it = file.find(id); it != file.end()) {
+      r = it->second;
+      ++found;
+    }
+    if (saved) saved->stream() << io::energy_output_line(id, r) << '\n';
+    progress.update(++done);
+    return r;
+  };
+  std::vector<conf::CandidateResult> results;
+  if (!run.grading.custom)
+    for (const conf::EnergyCase& c : cases) results.push_back(evaluate(c.id, c.x, c.rest));
+  const std::size_t pairs_found = found;
+  std::vector<conf::EnergyOutputs> probes;
+  for (std::size_t p = 0; p < run.plan.x.size(); ++p)
+    probes.push_back(conf::probe_outputs(evaluate(run.probe_ids[p], run.plan.x[p], run.plan.rest[p])));
+  if (saved) saved->commit();
+
+  std::vector<std::string> notes;
+  if (!o.candidate.empty()) {
+    const std::size_t probes_found = found - pairs_found, m = run.plan.x.size();
+    if (probes_found == 0)
+      notes.push_back("the candidate file has no line for the " + std::to_string(m) +
+                      " consistency probes (ids consistency/<base id>/<n>, written by --inputs): the consistency "
+                      "checks were not evaluated, and fail");
+    else if (probes_found < m)
+      notes.push_back(std::to_string(m - probes_found) + " of the " + std::to_string(m) +
+                      " consistency probes have no line in the candidate file: the checks that need them were not "
+                      "evaluated, and fail");
+    if (file.size() > found)
+      std::cerr << "hinge conform: " << file.size() - found
+                << " line(s) of the candidate have ids that are neither graded pairs nor probes (ignored)\n";
+  }
+  conf::Grading grading;
+  grading.policy = o.policy;
+  conf::Report report = conf::grade_energy(name, *run.set, run.grading, grading, {}, std::move(results), probes);
+  report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
+  if (o.verbose) print_cases(std::cout, report.outcomes, "energy");
+  return emit(report, json, html, not_survived);
 }
 
 void print_mesh_comparison(const char* what, const conf::MeshComparison& c) {
@@ -269,7 +431,8 @@ Action add_conform(CLI::App& app) {
   cmd->add_option("--output", o->output, "With --inputs: write here (default: standard output)");
   cmd->add_option("--candidate", o->candidate, "Check outputs in the hinge eval format (same ids as --inputs)");
   cmd->add_option("--plugin", o->plugin, "Check a shared library exporting the C function of hinge/candidate.h");
-  cmd->add_option("--symbol", o->symbol, "The plugin's function")->capture_default_str();
+  cmd->add_option("--symbol", o->symbol,
+                  "The plugin's function (default hinge_candidate; with --energy, hinge_energy_candidate)");
   cmd->add_option("--case-timeout", o->case_timeout,
                   "With --plugin: seconds a case may take (the plugin runs in a child process: a crash or a time-out\n"
                   "fails that case, and the others still run)")
@@ -296,8 +459,19 @@ Action add_conform(CLI::App& app) {
   cmd->add_option("--write-vectors", o->write_vectors, "Regenerate the conformance vectors (conformance/) in DIR");
   cmd->add_option("--mesh", o->mesh, "Mesh mode: the deformed mesh (OBJ)");
   cmd->add_option("--rest", o->rest, "Mesh mode: the rest mesh (default: the deformed mesh)");
-  cmd->add_option("--energy", o->energy, "Mesh mode: tan, shells, willmore or bridson");
-  cmd->add_option("--k", o->k, "Mesh mode: bending stiffness")->capture_default_str();
+  cmd->add_option("--energy", o->energy,
+                  "Mesh mode: tan, shells, willmore or bridson. Without --mesh, with --inputs, --candidate or\n"
+                  "--plugin: the bending term psi = k w f(theta, theta_bar) to grade (shells, tan, willmore, bridson,\n"
+                  "or custom: the consistency checks only; docs/energy-conformance-cli.md)");
+  cmd->add_option("--k", o->k, "Mesh mode and --energy: bending stiffness")->capture_default_str();
+  auto* weight = cmd->add_option("--weight", o->weight,
+                                 "With --energy: the weight w of each hinge (contract: 3 |e_bar|^2 / A_bar, bridson,\n"
+                                 "edge-length, unit)")
+                     ->capture_default_str();
+  auto* hessian_kind = cmd->add_option("--hessian-kind", o->hessian_kind,
+                                       "With --energy: the Hessian the candidate gives, exact or gauss-newton\n"
+                                       "(c f'' grad theta grad theta^T)")
+                           ->capture_default_str();
   cmd->add_option("--hessian", o->hessian, "Mesh mode: the candidate's energy Hessian (Matrix Market)");
   cmd->add_option("--gradient", o->gradient, "Mesh mode: the candidate's energy gradient (3n numbers)");
   cmd->footer(
@@ -307,14 +481,47 @@ Action add_conform(CLI::App& app) {
       "correctly-rounded, faithful (<= 1 unit), 4u (<= 4 units), policy, approximate (outside the policy but\n"
       "within 2^-20 (1 + kappa) relative: the formula looks right and is not accurate), fail. A failing category\n"
       "is diagnosed: the usual convention mismatches (sign, degrees, unsigned angle, vertex order, Hessian\n"
-      "triangle, ...) that explain it are named with what to change. Exit: 0 pass, 1 fail (approximate\n"
-      "included), 2 usage error or unreadable candidate.");
-  return [o]() -> int {
+      "triangle, ...) that explain it are named with what to change. --energy E (without --mesh) grades a bending\n"
+      "term instead: hinge_energy_candidate plugins, or files {\"id\", \"energy\", \"grad\", \"hess\"} answering\n"
+      "--inputs (its graded pairs and consistency probes), with consistency checks (docs/energy-conformance-cli.md).\n"
+      "Exit: 0 pass, 1 fail (approximate included), 2 usage error or unreadable candidate.");
+  return [o, weight, hessian_kind]() -> int {
+    if (!o->energy.empty() && o->mesh.empty()) {  // a bending term
+      const int energy_modes = int(o->inputs) + int(!o->candidate.empty()) + int(!o->plugin.empty());
+      const char* problem =
+          !o->method.empty() || !o->write_vectors.empty()
+              ? "--energy (without --mesh) goes with --inputs, --candidate or --plugin, not --method or --write-vectors"
+          : energy_modes != 1      ? "--energy (without --mesh) needs exactly one of --inputs, --candidate, --plugin"
+          : !o->categories.empty() ? "--category does not go with --energy"
+          : !o->save.empty() && o->plugin.empty() ? "--save goes with --plugin"
+          : (!o->json.empty() || !o->report.empty()) && o->inputs
+              ? "--json and --report go with --candidate or --plugin"
+          : !o->output.empty() && !o->inputs ? "--output goes with --inputs"
+                                             : nullptr;
+      if (problem) {
+        std::cerr << "hinge conform: " << problem << "\n";
+        return exit_usage;
+      }
+      try {
+        return run_energy(*o);
+      } catch (const Unusable& e) {
+        std::cerr << "hinge conform: " << e.what() << "\n";
+        return exit_usage;
+      } catch (const std::runtime_error& e) {  // output files (io::AtomicFile), filesystem errors
+        std::cerr << "hinge conform: " << e.what() << "\n";
+        return exit_invalid_input;
+      }
+    }
+    if (weight->count() > 0 || hessian_kind->count() > 0) {
+      std::cerr << "hinge conform: --weight and --hessian-kind go with --energy (without --mesh)\n";
+      return exit_usage;
+    }
     const int modes = int(o->inputs) + int(!o->candidate.empty()) + int(!o->plugin.empty()) + int(!o->method.empty()) +
                       int(!o->write_vectors.empty()) + int(!o->mesh.empty());
     if (modes != 1) {
       std::cerr
-          << "hinge conform: give exactly one of --inputs, --candidate, --plugin, --method, --mesh, --write-vectors\n";
+          << "hinge conform: give exactly one of --inputs, --candidate, --plugin, --method, --mesh, --write-vectors\n"
+             "(and --energy E for a bending term)\n";
       return exit_usage;
     }
     if (!o->save.empty() && o->plugin.empty() && o->method.empty()) {

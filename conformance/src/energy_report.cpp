@@ -1,7 +1,10 @@
 // The report of a bending term's conformance (hinge/conformance/energy_report.hpp).
 #include "hinge/conformance/energy_report.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "hinge/conformance/energy_diagnosis.hpp"
 
@@ -14,6 +17,15 @@ std::string number(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", v);
   return buffer;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) {
+    if (!out.empty()) out += ", ";
+    out += n;
+  }
+  return out;
 }
 
 }  // namespace
@@ -69,6 +81,106 @@ Report make_energy_report(std::string candidate, const EnergySet& set, std::vect
         "blocks=\"diagonal\": only the Hessian's four 3 x 3 diagonal blocks were graded; its other entries "
         "were ignored");
   return r;
+}
+
+EnergyGrading energy_grading(const std::string& energy, const std::string& weight, double k, const std::string& hessian,
+                             bool diagonal_blocks) {
+  static const std::vector<std::string> energies{"shells", "tan", "willmore", "bridson", "custom"};
+  if (energy == "quadratic") throw std::invalid_argument("energy \"quadratic\" is not graded by this version yet");
+  if (energy == "viscoelastic")
+    throw std::invalid_argument("energy \"viscoelastic\" is not graded (it needs the previous state and a time step)");
+  if (std::find(energies.begin(), energies.end(), energy) == energies.end()) {
+    std::string why = "unknown energy \"";
+    why += energy;
+    why += "\" (choices: ";
+    why += joined(energies);
+    why += ")";
+    throw std::invalid_argument(why);
+  }
+  if (hessian == "projected")
+    throw std::invalid_argument("the Hessian treatment \"projected\" is not graded by this version yet");
+  if (hessian != "exact" && hessian != "gauss-newton") {
+    std::string why = "unknown Hessian treatment \"";
+    why += hessian;
+    why += "\" (choices: exact, gauss-newton)";
+    throw std::invalid_argument(why);
+  }
+  if (!(k > 0 && std::isfinite(k))) {
+    std::string why = "the stiffness k must be finite and positive; got ";
+    why += number(k);
+    throw std::invalid_argument(why);
+  }
+  EnergyGrading g;
+  g.custom = energy == "custom";
+  g.problem.model = parse_model(g.custom ? "shells" : energy);
+  g.problem.k = k;
+  g.problem.hessian = hessian == "gauss-newton" ? HessianKind::gauss_newton : HessianKind::exact;
+  g.weight = weight;
+  g.diagonal_blocks = diagonal_blocks;
+  return g;
+}
+
+ConsistencyPlan energy_consistency_plan(const EnergySet& set, Dtype dtype) {
+  std::vector<EnergyCase> base;
+  for (const std::size_t i : consistency_base(set)) base.push_back(set.cases[i]);
+  return consistency_plan(base, dtype);
+}
+
+std::vector<std::string> consistency_probe_ids(const ConsistencyPlan& plan) {
+  std::vector<std::string> ids(plan.x.size());
+  for (std::size_t i = 0; i < plan.base.size(); ++i)
+    for (std::size_t n = 0; n < probes_per_case; ++n) {
+      std::string& id = ids.at(plan.first[i] + n);
+      id = consistency_category;
+      id += '/';
+      id += plan.base[i].id;
+      id += '/';
+      id += std::to_string(n);
+    }
+  return ids;
+}
+
+EnergyOutputs probe_outputs(const CandidateResult& r) {
+  EnergyOutputs o;
+  o.ok = r.status == CandidateResult::Status::ok;
+  o.energy = r.theta;
+  o.grad = r.grad;
+  o.hess = r.hess;
+  return o;
+}
+
+Report grade_energy(std::string candidate, const EnergySet& set, const EnergyGrading& energy, const Grading& grading,
+                    std::vector<double> weights, std::vector<CandidateResult> results,
+                    const std::vector<EnergyOutputs>& probes, const Stencil& stencil) {
+  // The contract's weight, not given per case: the oracle's fast path; any other weight: its interval path.
+  const bool fast_path = weights.empty() && energy.weight == "contract";
+  if (weights.empty()) weights = set_weights(set, energy.weight);
+  if (weights.size() != set.cases.size()) throw std::invalid_argument("grade_energy: one weight per case of the set");
+  if (!energy.custom && results.size() != set.cases.size())
+    throw std::invalid_argument("grade_energy: one result per case of the set");
+  if (energy.custom && !results.empty())
+    throw std::invalid_argument("grade_energy: energy \"custom\" is graded on the consistency probes alone");
+
+  // The consistency checks on the probes, each normalized by its base case's c = k w.
+  const ConsistencyPlan plan = energy_consistency_plan(set, grading.dtype);
+  if (probes.size() != plan.x.size()) throw std::invalid_argument("grade_energy: one output per consistency probe");
+  std::vector<double> c;
+  for (const std::size_t i : consistency_base(set)) c.push_back(energy.problem.k * weights[i]);
+  ConsistencyOptions options;
+  options.dtype = grading.dtype;
+  options.energy_given = grading.given[0];
+  options.grad_given = grading.given[1];
+  options.hess_given = grading.given[2];
+  options.hessian_exact = energy.problem.hessian == HessianKind::exact;
+  options.diagonal_blocks = energy.diagonal_blocks;
+  std::vector<ConsistencyCheck> checks = consistency_checks(plan, probes, c, options);
+
+  std::vector<Expected> expected;
+  if (!energy.custom)
+    expected = energy_expectations(set, energy.problem, fast_path ? std::vector<double>{} : weights, grading.dtype,
+                                   energy.diagonal_blocks);
+  return make_energy_report(std::move(candidate), set, std::move(expected), weights, std::move(results), grading,
+                            energy, std::move(checks), stencil);
 }
 
 }  // namespace hinge::conformance

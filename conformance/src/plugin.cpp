@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -15,12 +16,16 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 
 namespace hinge::conformance {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr std::size_t kOutputs = 1 + 12 + 144;  // theta, grad, hess
+constexpr std::size_t kOutputs = 1 + 12 + 144;  // theta (or psi), grad, hess
+
+// The doubles a request carries: x, and for a bending term its rest hinge after it.
+std::size_t input_count(PluginKind kind) { return kind == PluginKind::energy ? 24 : 12; }
 
 // The child's answer to one case: the plugin's return value and its outputs.
 struct Answer {
@@ -64,7 +69,7 @@ bool write_all(int fd, const void* buffer, std::size_t n) {
 
 // The child: loads the library, reports (status 0, or 1 and why), then answers requests until the parent
 // closes the socket. Never returns.
-[[noreturn]] void serve(int fd, const std::string& path, const std::string& symbol) {
+[[noreturn]] void serve(int fd, const std::string& path, const std::string& symbol, PluginKind kind) {
   ::dup2(STDERR_FILENO, STDOUT_FILENO);  // what the plugin prints must not mix with the report
   auto report = [fd](std::int32_t status, const std::string& why) {
     const auto length = static_cast<std::uint32_t>(why.size());
@@ -82,14 +87,18 @@ bool write_all(int fd, const void* buffer, std::size_t n) {
     report(1, "plugin " + path + " has no symbol " + symbol + ": " + ::dlerror());
     ::_exit(0);
   }
-  const auto function = reinterpret_cast<hinge_candidate_fn*>(symbol_address);
+  const auto theta_function = reinterpret_cast<hinge_candidate_fn*>(symbol_address);
+  const auto energy_function = reinterpret_cast<hinge_energy_candidate_fn*>(symbol_address);
   report(0, "");
+  const std::size_t count = input_count(kind);
   for (;;) {
-    double x[12];
-    if (read_all(fd, x, sizeof x, Clock::time_point::max()) != 1) ::_exit(0);
+    double in[24];  // x, then the rest hinge for a bending term
+    if (read_all(fd, in, sizeof(double) * count, Clock::time_point::max()) != 1) ::_exit(0);
     Answer answer;
     for (double& v : answer.out) v = std::numeric_limits<double>::quiet_NaN();  // unwritten: non-finite
-    answer.status = function(x, &answer.out[0], &answer.out[1], &answer.out[13]);
+    answer.status = kind == PluginKind::energy
+                        ? energy_function(in, in + 12, &answer.out[0], &answer.out[1], &answer.out[13])
+                        : theta_function(in, &answer.out[0], &answer.out[1], &answer.out[13]);
     if (!write_all(fd, &answer.status, sizeof answer.status) || !write_all(fd, answer.out, sizeof answer.out))
       ::_exit(0);
   }
@@ -103,8 +112,8 @@ std::string seconds(double s) {
 
 }  // namespace
 
-Plugin::Plugin(const std::string& path, const std::string& symbol, double timeout_seconds)
-    : path_(path), symbol_(symbol), timeout_(timeout_seconds) {
+Plugin::Plugin(const std::string& path, const std::string& symbol, double timeout_seconds, PluginKind kind)
+    : path_(path), symbol_(symbol), timeout_(timeout_seconds), kind_(kind) {
   start();
 }
 
@@ -147,7 +156,7 @@ void Plugin::start() {
   }
   if (pid == 0) {
     ::close(pair[0]);
-    serve(pair[1], path_, symbol_);
+    serve(pair[1], path_, symbol_, kind_);
   }
   ::close(pair[1]);
   socket_ = pair[0];
@@ -173,13 +182,26 @@ void Plugin::start() {
 }
 
 CandidateResult Plugin::operator()(const std::array<double, 12>& x) {
+  if (kind_ != PluginKind::theta) throw std::logic_error("Plugin: a bending term is called with x and its rest hinge");
+  return call(x.data(), 12);
+}
+
+CandidateResult Plugin::operator()(const std::array<double, 12>& x, const std::array<double, 12>& rest) {
+  if (kind_ != PluginKind::energy) throw std::logic_error("Plugin: a bend angle is called with x alone");
+  double in[24];
+  std::copy(x.begin(), x.end(), in);
+  std::copy(rest.begin(), rest.end(), in + 12);
+  return call(in, 24);
+}
+
+CandidateResult Plugin::call(const double* in, std::size_t count) {
   CandidateResult r;
   r.status = CandidateResult::Status::error;
   if (child_ < 0) start();  // after a crash or a time-out
   Answer answer;
   const auto deadline =
       std::chrono::time_point_cast<Clock::duration>(Clock::now() + std::chrono::duration<double>(timeout_));
-  int got = write_all(socket_, x.data(), sizeof(double) * 12) ? 1 : 0;
+  int got = write_all(socket_, in, sizeof(double) * count) ? 1 : 0;
   if (got == 1) got = read_all(socket_, &answer.status, sizeof answer.status, deadline);
   if (got == 1) got = read_all(socket_, answer.out, sizeof answer.out, deadline);
   if (got != 1) {

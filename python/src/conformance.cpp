@@ -124,52 +124,25 @@ conf::Report energy_grade(const std::string& candidate, const std::string& energ
                           const std::vector<std::string>& errors, const std::vector<std::string>& notes,
                           const Array& probe_values, const Array& probe_grad, const Array& probe_hess,
                           const std::vector<bool>& probe_ok) {
-  const bool custom = energy == "custom";
+  const conf::EnergyGrading eg = parsed([&] { return conf::energy_grading(energy, weight, k, hessian, diagonal); });
   const conf::EnergySet& set = set_of(energy);
-  conf::EnergyGrading eg;
-  eg.problem.model = parse_model(custom ? "shells" : energy);
-  eg.problem.k = k;
-  eg.problem.hessian = hessian == "gauss-newton" ? conf::HessianKind::gauss_newton : conf::HessianKind::exact;
-  eg.weight = weight;
-  eg.diagonal_blocks = diagonal;
-  eg.custom = custom;
   conf::Grading grading;
   grading.dtype = parsed([&] { return conf::parse_dtype(dtype); });
   grading.given = given;
-  const std::vector<double> w = weights.empty() ? energy_weights(energy, weight) : weights;
-  if (w.size() != set.cases.size()) throw py::value_error("energy_grade: one weight per case of the set");
 
-  // The consistency checks on the probes.
-  const std::vector<std::size_t> base = conf::consistency_base(set);
-  std::vector<conf::EnergyCase> cases;
-  std::vector<double> c;
-  for (const std::size_t i : base) {
-    cases.push_back(set.cases[i]);
-    c.push_back(k * w[i]);
-  }
-  const conf::ConsistencyPlan plan = conf::consistency_plan(cases, grading.dtype);
-  const std::size_t m = plan.x.size();
+  const std::size_t m = probe_ok.size();
   if (static_cast<std::size_t>(probe_values.size()) != m || static_cast<std::size_t>(probe_grad.size()) != 12 * m ||
-      static_cast<std::size_t>(probe_hess.size()) != 144 * m || probe_ok.size() != m)
+      static_cast<std::size_t>(probe_hess.size()) != 144 * m)
     throw py::value_error("energy_grade: one row per consistency probe");
-  std::vector<conf::EnergyOutputs> outputs(m);
+  std::vector<conf::EnergyOutputs> probes(m);
   for (std::size_t i = 0; i < m; ++i) {
-    outputs[i].ok = probe_ok[i];
-    outputs[i].energy = probe_values.data()[i];
-    std::copy_n(probe_grad.data() + 12 * i, 12, outputs[i].grad.begin());
-    std::copy_n(probe_hess.data() + 144 * i, 144, outputs[i].hess.begin());
+    probes[i].ok = probe_ok[i];
+    probes[i].energy = probe_values.data()[i];
+    std::copy_n(probe_grad.data() + 12 * i, 12, probes[i].grad.begin());
+    std::copy_n(probe_hess.data() + 144 * i, 144, probes[i].hess.begin());
   }
-  conf::ConsistencyOptions options;
-  options.dtype = grading.dtype;
-  options.energy_given = given[0];
-  options.grad_given = given[1];
-  options.hess_given = given[2];
-  options.hessian_exact = eg.problem.hessian == conf::HessianKind::exact;
-  options.diagonal_blocks = diagonal;
-
-  std::vector<conf::Expected> expected;
   std::vector<conf::CandidateResult> results;
-  if (!custom) {
+  if (!eg.custom) {
     const std::size_t n = set.cases.size();
     if (static_cast<std::size_t>(values.size()) != n || static_cast<std::size_t>(grad.size()) != 12 * n ||
         static_cast<std::size_t>(hess.size()) != 144 * n || status.size() != n || errors.size() != n)
@@ -186,15 +159,8 @@ conf::Report energy_grade(const std::string& candidate, const std::string& energ
     }
   }
   py::gil_scoped_release release;
-  std::vector<conf::ConsistencyCheck> checks = conf::consistency_checks(plan, outputs, c, options);
-  if (!custom)
-    expected = parsed([&] {  // the contract's weight: the oracle's fast path; any other: its interval path
-      return conf::energy_expectations(set, eg.problem,
-                                       weight == "contract" && weights.empty() ? std::vector<double>{} : w,
-                                       grading.dtype, diagonal);
-    });
-  conf::Report report = conf::make_energy_report(candidate, set, std::move(expected), w, std::move(results), grading,
-                                                 eg, std::move(checks), stencil);
+  conf::Report report = parsed(
+      [&] { return conf::grade_energy(candidate, set, eg, grading, weights, std::move(results), probes, stencil); });
   report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
   return report;
 }

@@ -1,16 +1,19 @@
 // hinge/conformance/plugin.hpp: a candidate implementation loaded from a shared library (hinge/candidate.h), as
-// `hinge conform --plugin LIB.so [--symbol NAME]` calls it: once per conformance case, from one thread.
+// `hinge conform --plugin LIB.so [--symbol NAME]` calls it: once per conformance case, from one thread. Two
+// kinds: a bend angle (hinge_candidate_fn) and a bending term (hinge_energy_candidate_fn, `hinge conform
+// --energy E --plugin`: once per graded pair and once per consistency probe).
 //
 // The library is loaded and called in a child process (docs/contract.md, "Plugins", version 2), so that
 // hinge conform survives it: a case on which the plugin crashes, or runs longer than the time-out, fails
 // with the signal or the time-out named, the child is started again, and the other cases still run. The
-// child talks to the parent over a socket pair: 12 doubles in, a status and 157 doubles out. Whatever the
-// plugin prints goes to standard error.
+// child talks to the parent over a socket pair: 12 doubles in (24 for a bending term: x, then the rest
+// hinge), a status and 157 doubles out. Whatever the plugin prints goes to standard error.
 #pragma once
 
 #include <sys/types.h>
 
 #include <array>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -26,11 +29,18 @@ class PluginError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The function a plugin exports (hinge/candidate.h).
+enum class PluginKind {
+  theta,   // hinge_candidate_fn: theta, grad theta, Hess theta of a hinge x (default symbol hinge_candidate)
+  energy,  // hinge_energy_candidate_fn: psi, grad psi, Hess psi of x with its rest hinge (hinge_energy_candidate)
+};
+
 class Plugin {
  public:
-  // Starts the child, which loads `path` (dlopen) and finds `symbol` (dlsym); throws PluginError naming
-  // both and the reason. `timeout_seconds` bounds each case, and the loading.
-  Plugin(const std::string& path, const std::string& symbol, double timeout_seconds = 10);
+  // Starts the child, which loads `path` (dlopen) and finds `symbol` (dlsym), a function of `kind`; throws
+  // PluginError naming both and the reason. `timeout_seconds` bounds each case, and the loading.
+  Plugin(const std::string& path, const std::string& symbol, double timeout_seconds = 10,
+         PluginKind kind = PluginKind::theta);
   ~Plugin();
   Plugin(const Plugin&) = delete;
   Plugin& operator=(const Plugin&) = delete;
@@ -38,7 +48,14 @@ class Plugin {
   // The plugin's outputs for x: ok (or nonfinite, when it wrote a NaN or an infinity, or left an output
   // unwritten), or error: "returned N" when it returned nonzero, "crashed (signal N, NAME)" or "timed out
   // after S s" when the child did not survive the case (it is started again for the next one).
+  // A theta plugin only (std::logic_error otherwise).
   CandidateResult operator()(const std::array<double, 12>& x);
+
+  // The same for a bending term at x with its rest hinge: psi in the result's theta slot, as the energy
+  // conformance grades it (energy_report.hpp). An energy plugin only (std::logic_error otherwise).
+  CandidateResult operator()(const std::array<double, 12>& x, const std::array<double, 12>& rest);
+
+  PluginKind kind() const { return kind_; }
 
   // Whether an error of operator() is one the plugin did not survive (a crash or a time-out).
   static bool fatal(const CandidateResult& r);
@@ -46,8 +63,10 @@ class Plugin {
  private:
   void start();  // forks the child and waits for it to report the library loaded; throws PluginError
   void stop();   // kills and reaps the child, if any
+  CandidateResult call(const double* in, std::size_t count);  // count doubles in, one answer out
   std::string path_, symbol_;
   double timeout_;
+  PluginKind kind_;
   pid_t child_ = -1;
   int socket_ = -1;
 };
