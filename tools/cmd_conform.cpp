@@ -15,7 +15,7 @@
 //     --plugin LIB.so [--symbol NAME] [--save FILE]   hinge_energy_candidate (hinge/candidate.h), on the pairs
 //                                    and the probes, in a child process as for theta
 //   with [--json FILE] [--report F.html] [--case-timeout S] [--verbose]; W one of contract, bridson,
-//   edge-length, unit. Not offered yet (usage errors): energy quadratic, --hessian-kind projected, --depth deep.
+//   edge-length, unit (quadratic: none). Not offered yet (usage errors): --hessian-kind projected, --depth deep.
 // Exit status: 0 within the tolerance policy everywhere (and every consistency check passes), 1 not, 2 usage
 // error, unreadable candidate or a plugin that cannot be loaded.
 // The numerics (certified values, conditioning, policy, comparisons, consistency checks, report) are
@@ -239,9 +239,6 @@ struct EnergyRun {
 EnergyRun energy_run(const ConformOptions& o) {
   EnergyRun run;
   try {
-    // Not through energy_grading alone: a quadratic term is graded on its own set, which this route does not read.
-    if (o.energy == "quadratic")
-      throw std::invalid_argument("energy \"quadratic\" is not offered by the command line yet");
     const std::vector<std::string>& weights = conf::weight_names();
     if (std::find(weights.begin(), weights.end(), o.weight) == weights.end()) {
       std::string choices;
@@ -257,7 +254,8 @@ EnergyRun energy_run(const ConformOptions& o) {
       throw std::invalid_argument(why);
     }
     run.grading = conf::energy_grading(o.energy, o.weight, o.k, o.hessian_kind);
-    run.set = &conf::energy_set(run.grading.problem.model, conf::parse_depth(o.depth));
+    run.set = run.grading.custom ? &conf::energy_set(run.grading.problem.model, conf::parse_depth(o.depth))
+                                 : &conf::energy_set_of(run.grading.problem, conf::parse_depth(o.depth));
   } catch (const std::invalid_argument& e) {
     throw Unusable(e.what());
   }

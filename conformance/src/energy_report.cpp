@@ -51,7 +51,7 @@ Report make_energy_report(std::string candidate, const EnergySet& set, std::vect
   if (energy.diagonal_blocks)
     for (CandidateResult& r : results) keep_diagonal_blocks(r.hess.data());
   Report r = make_report(std::move(candidate), std::move(expected), std::move(results), grading, stencil);
-  r.settings = {{"energy", std::string(model_name(energy.problem.model))},
+  r.settings = {{"energy", energy_name(energy.problem)},
                 {"weight", energy.weight},
                 {"k", number(energy.problem.k)},
                 {"hessian", hessian_name(energy.problem.hessian)},
@@ -85,8 +85,7 @@ Report make_energy_report(std::string candidate, const EnergySet& set, std::vect
 
 EnergyGrading energy_grading(const std::string& energy, const std::string& weight, double k, const std::string& hessian,
                              bool diagonal_blocks) {
-  static const std::vector<std::string> energies{"shells", "tan", "willmore", "bridson", "custom"};
-  if (energy == "quadratic") throw std::invalid_argument("energy \"quadratic\" is not graded by this version yet");
+  static const std::vector<std::string> energies{"shells", "tan", "willmore", "bridson", "quadratic", "custom"};
   if (energy == "viscoelastic")
     throw std::invalid_argument("energy \"viscoelastic\" is not graded (it needs the previous state and a time step)");
   if (std::find(energies.begin(), energies.end(), energy) == energies.end()) {
@@ -112,10 +111,15 @@ EnergyGrading energy_grading(const std::string& energy, const std::string& weigh
   }
   EnergyGrading g;
   g.custom = energy == "custom";
-  g.problem.model = parse_model(g.custom ? "shells" : energy);
+  g.problem.quadratic = energy == "quadratic";
+  if (g.problem.quadratic && hessian != "exact")
+    throw std::invalid_argument("the quadratic energy's Hessian is constant: only the treatment \"exact\" is graded");
+  if (g.problem.quadratic && weight != "contract" && weight != "none")
+    throw std::invalid_argument("the quadratic energy takes no weight (its 3 / A_bar is part of its definition)");
+  g.problem.model = parse_model(g.custom || g.problem.quadratic ? "shells" : energy);
   g.problem.k = k;
   g.problem.hessian = hessian == "gauss-newton" ? HessianKind::gauss_newton : HessianKind::exact;
-  g.weight = weight;
+  g.weight = g.problem.quadratic ? "none" : weight;
   g.diagonal_blocks = diagonal_blocks;
   return g;
 }
@@ -153,8 +157,9 @@ Report grade_energy(std::string candidate, const EnergySet& set, const EnergyGra
                     std::vector<double> weights, std::vector<CandidateResult> results,
                     const std::vector<EnergyOutputs>& probes, const Stencil& stencil) {
   // The contract's weight, not given per case: the oracle's fast path; any other weight: its interval path.
-  const bool fast_path = weights.empty() && energy.weight == "contract";
-  if (weights.empty()) weights = set_weights(set, energy.weight);
+  // quadratic takes no weight: the contract's stands in as the consistency checks' normalizer c = k w.
+  const bool fast_path = weights.empty() && (energy.weight == "contract" || energy.problem.quadratic);
+  if (weights.empty()) weights = set_weights(set, energy.problem.quadratic ? "contract" : energy.weight);
   if (weights.size() != set.cases.size()) throw std::invalid_argument("grade_energy: one weight per case of the set");
   if (!energy.custom && results.size() != set.cases.size())
     throw std::invalid_argument("grade_energy: one result per case of the set");

@@ -352,7 +352,8 @@ def conform_energy(
     tuple in that order: energy (n,), grad (n, 12), hess (n, 12, 12) or (n, 144) of psi with respect to X, in
     its own variable order. With batch=False, one hinge at a time (X and R of shape (12,)).
 
-    energy: "shells", "tan", "willmore", "bridson" (docs/quantities.md) or "custom" (the consistency checks
+    energy: "shells", "tan", "willmore", "bridson", "quadratic" (the isometric bending of Bergou et al.
+    2006, on flat rest hinges, without weight; docs/quantities.md) or "custom" (the consistency checks
     only). weight: "contract" (3 |e_bar|^2 / A_bar), another name of docs/energy-conformance.md ("bridson",
     "edge-length", "unit"), or a callable of the rest hinges R (candidate order, (n, 12)) returning w (n,).
     hessian: "exact" or "gauss-newton" (c f'' grad theta grad theta^T, not clamped). blocks: "full", or
@@ -362,7 +363,7 @@ def conform_energy(
     differences of the energy, Hessian against differences of the gradient, symmetry, rigid motions, net
     force and torque); a failed check fails the run. Returns a Report (``settings``, ``checks`` besides the
     theta kit's). Raises ValueError for a bad argument or an output of the wrong shape or dtype, and for what
-    this version does not grade yet: energy="quadratic", hessian="projected", dtype="float32", depth="deep".
+    this version does not grade yet: hessian="projected", dtype="float32", depth="deep".
     """
     start = time.perf_counter()
     if not callable(fn):
@@ -372,15 +373,18 @@ def conform_energy(
     _choice(blocks, "blocks", ("full", "diagonal"))
     dtype_name = _dtype(dtype)
     _choice(depth, "depth", ("quick", "deep"))
+    if energy == "quadratic" and hessian != "exact":
+        raise ValueError(f"hessian={hessian!r}: the quadratic energy's Hessian is constant, only 'exact' is graded")
+    if energy == "quadratic" and not (isinstance(weight, str) and weight == "contract"):
+        raise ValueError("weight=: the quadratic energy takes no weight (its 3 / A_bar is part of its definition)")
     not_yet = {
-        "energy": energy == "quadratic",
         "hessian": hessian == "projected",
         "dtype": dtype_name == "float32",
         "depth": depth == "deep",
     }
     for name, missing in not_yet.items():
         if missing:
-            value = {"energy": energy, "hessian": hessian, "dtype": dtype_name, "depth": depth}[name]
+            value = {"hessian": hessian, "dtype": dtype_name, "depth": depth}[name]
             raise ValueError(f"{name}={value!r} is not graded by this version of hinge.conform_energy yet "
                              "(docs/energy-conformance.md, \"Not yet\")")
     if isinstance(k, bool) or not isinstance(k, (int, float, np.floating, np.integer)) or not (0 < float(k) < math.inf):
@@ -394,7 +398,7 @@ def conform_energy(
     ids, _, x, rest, _ = _hinge.energy_set(energy)
     n = len(ids)
     rest_candidate = np.ascontiguousarray(rest[:, columns], dtype=dtype_name)
-    label, w = _weights(weight, rest_candidate)
+    label, w = ("none", None) if energy == "quadratic" else _weights(weight, rest_candidate)
     calls = _Calls(fn, names, batch)
     values, grad, hess = np.zeros(n), np.zeros((n, 12)), np.zeros((n, 12, 12))
     status, errors = np.full(n, _OK, dtype=np.int64), [""] * n

@@ -75,9 +75,12 @@ conf::Report grade(const std::string& candidate, const std::string& dtype, const
 }
 
 // The set an energy name grades on ("custom": the shells set, whose pairs are all finite: only its
-// consistency base is used).
+// consistency base is used; "quadratic": its own, flat rest hinges).
 const conf::EnergySet& set_of(const std::string& energy) {
-  return parsed([&]() -> const auto& { return conf::energy_set(parse_model(energy == "custom" ? "shells" : energy)); });
+  return parsed([&]() -> const auto& {
+    if (energy == "quadratic") return conf::quadratic_set();
+    return conf::energy_set(parse_model(energy == "custom" ? "shells" : energy));
+  });
 }
 
 py::array_t<double> rows(const std::vector<std::array<double, 12>>& v) {

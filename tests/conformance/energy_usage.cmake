@@ -15,8 +15,9 @@ function(usage regex)
   endif()
 endfunction()
 
-usage("unknown energy \"bending\" \\(choices: shells, tan, willmore, bridson, custom\\)" --energy bending --inputs)
-usage("\"quadratic\" is not offered by the command line yet" --energy quadratic --inputs)
+usage("unknown energy \"bending\" \\(choices: shells, tan, willmore, bridson, quadratic, custom\\)" --energy bending --inputs)
+usage("the quadratic energy's Hessian is constant" --energy quadratic --hessian-kind gauss-newton --inputs)
+usage("the quadratic energy takes no weight" --energy quadratic --weight unit --inputs)
 usage("\"viscoelastic\" is not graded" --energy viscoelastic --inputs)
 usage("unknown weight \"cotan\" \\(choices: contract, bridson, edge-length, unit\\)" --energy tan --weight cotan --inputs)
 usage("unknown Hessian treatment \"newton\" \\(choices: exact, gauss-newton\\)" --energy tan --hessian-kind newton

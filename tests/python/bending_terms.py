@@ -98,3 +98,30 @@ def bridson_term(k=1.0, weight=contract_weight):
         return A * (np.cos(t.theta / 2) - B * t.theta), g, H
 
     return term
+
+
+def quadratic_term(k=1.0, constant=3.0):
+    """The isometric bending of Bergou et al. 2006: psi = k (constant / A_bar) |sum_j K_j x_j|^2, K the rest
+    hinge's cotangent weights (docs/quantities.md; constant 3 is the contract's, Bergou's Q_e is 3 / A_bar
+    with a 1/2 in front of the quadratic form)."""
+
+    def term(X, R):
+        V, _ = edge_vectors(R)  # cotangents and the area ratio are scale-free
+        e0, e1, e2 = V[:, 2] - V[:, 1], V[:, 0] - V[:, 2], V[:, 1] - V[:, 0]
+        t1, t2 = V[:, 3] - V[:, 2], V[:, 1] - V[:, 3]
+        N = np.linalg.norm(np.cross(e0, e1), axis=1)
+        Nt = np.linalg.norm(np.cross(e0, t1), axis=1)
+        dot = lambda a, b: np.einsum("ij,ij->i", a, b)  # noqa: E731
+        cot1, cot2 = -dot(e0, e2) / N, -dot(e0, e1) / N
+        cott1, cott2 = -dot(e0, t2) / Nt, -dot(e0, t1) / Nt
+        K = np.stack([-(cot1 + cot2), cot2 + cott2, cot1 + cott1, -(cott1 + cott2)], axis=1)  # (n, 4)
+        _, scale = edge_vectors(R)
+        c = k * constant / ((N + Nt) / 2 * scale * scale)  # A_bar in R's units
+        P = X.reshape(-1, 4, 3)
+        s = np.einsum("nj,njc->nc", K, P - P[:, 1:2])  # sum K = 0: differences from x1 (exact)
+        energy = c * dot(s, s)
+        grad = (2 * c[:, None, None] * K[:, :, None] * s[:, None, :]).reshape(-1, 12)
+        hess = np.einsum("n,ni,nj,ab->niajb", 2 * c, K, K, np.eye(3)).reshape(-1, 12, 12)
+        return energy, grad, hess
+
+    return term

@@ -7,7 +7,15 @@ import numpy as np
 import pytest
 
 import hinge
-from bending_terms import bridson_term, contract_weight, edge_length, shells_term, tan_term, willmore_term
+from bending_terms import (
+    bridson_term,
+    contract_weight,
+    edge_length,
+    quadratic_term,
+    shells_term,
+    tan_term,
+    willmore_term,
+)
 
 
 def sentence(report):
@@ -183,7 +191,8 @@ def test_the_json_report_carries_settings_and_checks():
 @pytest.mark.parametrize(
     "options",
     [
-        {"energy": "quadratic"},
+        {"energy": "quadratic", "hessian": "gauss-newton"},
+        {"energy": "quadratic", "weight": "unit"},
         {"hessian": "projected"},
         {"dtype": "float32"},
         {"depth": "deep"},
@@ -200,3 +209,17 @@ def test_the_json_report_carries_settings_and_checks():
 def test_bad_or_not_yet_offered_arguments_raise_value_error(options):
     with pytest.raises(ValueError):
         hinge.conform_energy(tan_term(), **options)
+
+
+def test_the_quadratic_isometric_bending_term_passes_on_flat_rest_hinges():
+    r = hinge.conform_energy(quadratic_term(), energy="quadratic")
+    assert r.passed, str(r)
+    assert {c.split("/")[1] for c in r.categories} == {"flat", "at-rest"}
+    assert r.settings["energy"] == "quadratic" and r.settings["weight"] == "none"
+
+
+def test_bergous_half_quadratic_form_is_named_as_a_factor_one_half():
+    # Bergou et al. 2006 write E = 1/2 x^T Q x with Q_e = 3 / A_bar K K^T: with the contract's k that is half.
+    r = hinge.conform_energy(quadratic_term(constant=1.5), energy="quadratic")
+    assert not r.passed
+    assert "1/2 times the declared one" in sentence(r)
