@@ -11,6 +11,8 @@
 #include <numbers>
 #include <numeric>
 
+#include <Eigen/Eigenvalues>
+
 #include "diagnosis_engine.hpp"
 #include "hinge/conformance/energy_sets.hpp"
 #include "hinge/core/errors.hpp"
@@ -51,7 +53,16 @@ class EnergyHypotheses {
     std::vector<Hypothesis> out;
     const bool exact = problem_.hessian == HessianKind::exact;
     // The Hessian treatment (not for quadratic: its Hessian is constant, with no Gauss-Newton one).
-    if (!problem_.quadratic)
+    if (problem_.hessian == HessianKind::projected) {
+      out.push_back(treatment("exact-given-projected",
+                              "the exact Hessian given where the projected one was declared (its negative "
+                              "eigenvalues kept)",
+                              "declare hessian=\"exact\", or set each hinge's negative eigenvalues to zero", false));
+      out.push_back(treatment("gauss-newton-given-projected",
+                              "a Gauss-Newton Hessian (c f'' grad theta grad theta^T) given where the projected one "
+                              "was declared",
+                              "declare hessian=\"gauss-newton\", or project each hinge's exact Hessian", true));
+    } else if (!problem_.quadratic)
       out.push_back(predicting(
           exact ? "gauss-newton-given" : "exact-given",
           exact ? "a Gauss-Newton Hessian (c f'' grad theta grad theta^T) given where the exact one "
@@ -130,7 +141,7 @@ class EnergyHypotheses {
  private:
   // psi, its gradient and Hessian (exact or Gauss-Newton) in double with rest angle `theta_bar`; nothing where
   // the energy is infinite there.
-  std::optional<Outputs> evaluate(std::size_t i, double theta_bar, bool gauss_newton) const {
+  std::optional<Outputs> evaluate(std::size_t i, double theta_bar, bool gauss_newton, bool project = false) const {
     const CaseData& d = data_[i];
     HingeCoefficients<double> c;
     c.k = problem_.k;
@@ -157,6 +168,13 @@ class EnergyHypotheses {
         const double h = gauss_newton ? 0.0 : p.d1 * std::ldexp(d.x.hess[12 * r + col], 2 * e);
         o.hess[12 * r + col] = std::ldexp(h + p.d2 * g[r] * g[col], -2 * e);
       }
+    if (project) {  // the projected treatment, in double (Eigen's self-adjoint solver)
+      using Matrix12 = Eigen::Matrix<double, 12, 12, Eigen::RowMajor>;
+      const Eigen::SelfAdjointEigenSolver<Matrix12> eig(Eigen::Map<const Matrix12>(o.hess.data()));
+      const Matrix12 projected =
+          eig.eigenvectors() * eig.eigenvalues().cwiseMax(0).asDiagonal() * eig.eigenvectors().transpose();
+      Eigen::Map<Matrix12>(o.hess.data()) = projected;
+    }
     if (diagonal_) keep_diagonal_blocks(o.hess.data());
     return o;
   }
@@ -177,8 +195,27 @@ class EnergyHypotheses {
     h.apply = [this, rest, gn, declared](std::size_t i) -> std::optional<Outputs> {
       const double theta_bar = rest(data_[i].theta_bar);
       if (theta_bar == data_[i].theta_bar && gn == declared) return detail::outputs_of(expected_[i].values);
-      std::optional<Outputs> o = evaluate(i, theta_bar, gn);
+      std::optional<Outputs> o = evaluate(i, theta_bar, gn, problem_.hessian == HessianKind::projected);
       if (o && gn != declared) {  // only the Hessian differs: psi and the gradient stay certified
+        o->theta = expected_[i].values.theta;
+        o->grad = expected_[i].values.grad;
+      }
+      return o;
+    };
+    return h;
+  }
+
+  // The certified energy and gradient with the exact (or Gauss-Newton) Hessian evaluated in double: a term
+  // that gives that Hessian where the projected one was declared.
+  Hypothesis treatment(std::string key, std::string explanation, std::string change, bool gauss_newton) const {
+    Hypothesis h;
+    h.key = std::move(key);
+    h.explanation = std::move(explanation);
+    h.change = std::move(change);
+    h.changes = {false, false, true};
+    h.apply = [this, gauss_newton](std::size_t i) -> std::optional<Outputs> {
+      std::optional<Outputs> o = evaluate(i, data_[i].theta_bar, gauss_newton);
+      if (o) {
         o->theta = expected_[i].values.theta;
         o->grad = expected_[i].values.grad;
       }

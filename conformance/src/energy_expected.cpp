@@ -10,6 +10,7 @@
 #include "hinge/oracle/conditioning.hpp"
 #include "hinge/oracle/mesh.hpp"
 #include "hinge/oracle/oracle.hpp"
+#include "hinge/oracle/projected.hpp"
 #include "hinge/oracle/quadratic.hpp"
 
 namespace hinge::conformance {
@@ -71,11 +72,34 @@ Expected energy_expected(const EnergyCase& c, const EnergyProblem& problem, bool
       e.values.hess[static_cast<std::size_t>(12 * it.col() + it.row())] = it.value();
     }
   e.values.uncertified = m.uncertified;
+  std::array<double, 144> exact_hessian = e.values.hess;
+  if (problem.hessian == HessianKind::projected) {
+    EnergyParameters unit = parameters;  // the 256-bit reference for k = 1 and the contract's weight, scaled: a
+    unit.k = 1;                          // positive factor commutes with the projection
+    e.values.hess = oracle::projected_hessian_256(c.x, c.rest, unit);
+    const double factor = problem.k * (weight ? *weight / named_weight("contract", c.rest) : 1.0);
+    for (double& v : e.values.hess) v *= factor;
+  }
   if (!conditioning) return e;
   e.conditioning = oracle::energy_conditioning(c.x, c.rest, parameters, options.gauss_newton, e.values.theta,
-                                               e.values.grad, e.values.hess);
+                                               e.values.grad, exact_hessian);
+  if (problem.hessian == HessianKind::projected) set_projected_kappa(e);
   apply_zero_energy_bound(e, c, problem, weight);
   return e;
+}
+
+void set_projected_kappa(Expected& e) {
+  const double size = oracle::scaled_norm(e.values.hess.data(), 144);  // ||H_+||; scale[2] = kappa_H ||H||
+  e.conditioning.kappa[2] = size > 0 ? e.conditioning.scale[2] / size : 1.0;
+}
+
+const char* hessian_kind_name(HessianKind h) {
+  switch (h) {
+    case HessianKind::exact: return "exact";
+    case HessianKind::gauss_newton: return "gauss-newton";
+    case HessianKind::projected: return "projected";
+  }
+  return "?";
 }
 
 void apply_zero_energy_bound(Expected& e, const EnergyCase& c, const EnergyProblem& problem,

@@ -52,6 +52,36 @@ const std::map<std::string, CommittedConditioning>& committed(const std::string&
   return it->second;
 }
 
+// The committed 256-bit projected Hessians of an energy's cases (energies/<energy>.projected.jsonl: per case its
+// upper triangle, row by row, 78 numbers), for k = 1 and the contract's weight.
+const std::map<std::string, std::array<double, 144>>& committed_projected(const std::string& energy) {
+  static std::mutex mutex;
+  static std::map<std::string, std::map<std::string, std::array<double, 144>>> cache;
+  const std::lock_guard lock(mutex);
+  auto [it, fresh] = cache.try_emplace(energy);
+  if (!fresh) return it->second;
+  const std::string name = "energies/" + energy + ".projected.jsonl";
+  const std::string_view text = embedded_file(name);
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(begin, end - begin);
+    begin = end + 1;
+    if (line.empty()) continue;
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_discarded()) throw std::logic_error("conformance set " + name + ": a line is not JSON");
+    const auto upper = j.at("hess_upper").get<std::vector<double>>();
+    if (upper.size() != 78) throw std::logic_error("conformance set " + name + ": hess_upper needs 78 numbers");
+    std::array<double, 144> h{};
+    std::size_t k = 0;
+    for (int row = 0; row < 12; ++row)
+      for (int col = row; col < 12; ++col) h[12 * row + col] = h[12 * col + row] = upper[k++];
+    it->second.emplace(j.at("id").get<std::string>(), h);
+  }
+  return it->second;
+}
+
 }  // namespace
 
 const EnergySet& energy_set(Model model, Depth depth) {
@@ -149,7 +179,10 @@ std::vector<Expected> energy_expectations(const EnergySet& set, const EnergyProb
     const auto found = table.find(c.id);
     if (found == table.end()) throw std::logic_error("energies/" + energy + ".jsonl has no case " + c.id);
     const std::optional<double> w = weights.empty() ? std::nullopt : std::optional<double>(weights[i]);
-    Expected e = energy_expected(c, problem, false, w);
+    const bool projected = problem.hessian == HessianKind::projected;
+    EnergyProblem certified = problem;  // projected: the certified outputs, then the committed reference
+    if (projected) certified.hessian = HessianKind::exact;
+    Expected e = energy_expected(c, certified, false, w);
     const CommittedConditioning& k = found->second;
     const double factor = problem.k * (w ? *w / named_weight("contract", c.rest) : 1.0);
     e.conditioning = k.exact;
@@ -158,6 +191,15 @@ std::vector<Expected> energy_expectations(const EnergySet& set, const EnergyProb
       e.conditioning.kappa[2] = k.kappa_gauss_newton;
     }
     for (double& s : e.conditioning.scale) s *= std::fabs(factor);
+    if (projected) {
+      const auto& references = committed_projected(energy);
+      const auto reference = references.find(c.id);
+      if (reference == references.end())
+        throw std::logic_error("energies/" + energy + ".projected.jsonl has no case " + c.id);
+      for (int j = 0; j < 144; ++j) e.values.hess[j] = reference->second[j] * factor;
+      e.values.uncertified.clear();  // the Hessian is not certified at all: the report says so
+      set_projected_kappa(e);
+    }
     if (e.values.theta == 0) apply_zero_energy_bound(e, c, problem, w);
     if (diagonal_blocks) {
       keep_diagonal_blocks(e.values.hess.data());

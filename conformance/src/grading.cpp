@@ -175,6 +175,7 @@ CaseOutcome compare(const Expected& e, const CandidateResult& candidate, const G
                                          : Tier::policy)
            : approximate ? Tier::approximate
                          : Tier::fail;
+  if (o.pass) o.tier = std::max(o.tier, grading.best);
   return o;
 }
 

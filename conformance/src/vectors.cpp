@@ -12,6 +12,7 @@
 #include "hinge/io/matrix_market.hpp"
 #include "hinge/io/number.hpp"
 #include "hinge/io/obj.hpp"
+#include "hinge/oracle/projected.hpp"
 
 namespace hinge::conformance {
 namespace {
@@ -119,6 +120,20 @@ std::string energy_line(const EnergyCase& c, Model model) {
 
 constexpr Model graded_energies[] = {Model::shells, Model::tan, Model::willmore, Model::bridson};
 
+// One line of energies/<energy>.projected.jsonl: the 256-bit projected Hessian (k = 1, the contract's weight),
+// its upper triangle row by row.
+std::string projected_line(const EnergyCase& c, Model model) {
+  EnergyParameters parameters;
+  parameters.model = model;
+  const std::array<double, 144> h = projected_hessian_256(c.x, c.rest, parameters);
+  std::vector<double> upper;
+  for (int row = 0; row < 12; ++row)
+    for (int col = row; col < 12; ++col) upper.push_back(h[12 * row + col]);
+  std::string line = "{\"id\": " + io::json_string(c.id) + ", \"hess_upper\": ";
+  io::append_array(line, upper.data(), upper.size());
+  return line + "}\n";
+}
+
 // The same for the quadratic energy (no Gauss-Newton Hessian: its keys are left out).
 std::string quadratic_line(const EnergyCase& c) {
   EnergyProblem problem;
@@ -145,7 +160,7 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
   VectorsSummary summary;
   SetWriter w{dir, progress};
   w.total = quick.size() + float32.size() + deep.size() + deep32.size();
-  for (const Model model : graded_energies) w.total += energy_set(model).cases.size();
+  for (const Model model : graded_energies) w.total += 2 * energy_set(model).cases.size();
   w.total += quadratic_set().cases.size();
   std::size_t none = 0;
   summary.quick = w.write("hinges", categories(), quick, false, true, none, none);
@@ -159,12 +174,16 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
   fs::create_directories(dir / "energies");
   for (const Model model : graded_energies) {
     io::AtomicFile f((dir / "energies" / (std::string(model_name(model)) + ".jsonl")).string());
+    io::AtomicFile p((dir / "energies" / (std::string(model_name(model)) + ".projected.jsonl")).string());
     for (const EnergyCase& c : energy_set(model).cases) {
       if (progress) progress(++w.done, w.total);
       f.stream() << energy_line(c, model);
+      if (progress) progress(++w.done, w.total);
+      p.stream() << projected_line(c, model);
       ++summary.energy_cases;
     }
     f.commit();
+    p.commit();
   }
   {
     io::AtomicFile f((dir / "energies" / "quadratic.jsonl").string());

@@ -356,14 +356,16 @@ def conform_energy(
     2006, on flat rest hinges, without weight; docs/quantities.md) or "custom" (the consistency checks
     only). weight: "contract" (3 |e_bar|^2 / A_bar), another name of docs/energy-conformance.md ("bridson",
     "edge-length", "unit"), or a callable of the rest hinges R (candidate order, (n, 12)) returning w (n,).
-    hessian: "exact" or "gauss-newton" (c f'' grad theta grad theta^T, not clamped). blocks: "full", or
+    hessian: "exact", "gauss-newton" (c f'' grad theta grad theta^T, not clamped) or "projected" (each hinge's
+    exact Hessian with its negative eigenvalues set to zero: graded against a 256-bit evaluation, not
+    certified, its tier at best "policy"). blocks: "full", or
     "diagonal" (only the Hessian's four 3 x 3 diagonal blocks graded, as vertex block descent uses them).
 
     Besides the certified values, the consistency checks run on the well-shaped hinges (gradient against
     differences of the energy, Hessian against differences of the gradient, symmetry, rigid motions, net
     force and torque); a failed check fails the run. Returns a Report (``settings``, ``checks`` besides the
     theta kit's). Raises ValueError for a bad argument or an output of the wrong shape or dtype, and for what
-    this version does not grade yet: hessian="projected", dtype="float32", depth="deep".
+    this version does not grade yet: dtype="float32", depth="deep".
     """
     start = time.perf_counter()
     if not callable(fn):
@@ -378,13 +380,12 @@ def conform_energy(
     if energy == "quadratic" and not (isinstance(weight, str) and weight == "contract"):
         raise ValueError("weight=: the quadratic energy takes no weight (its 3 / A_bar is part of its definition)")
     not_yet = {
-        "hessian": hessian == "projected",
         "dtype": dtype_name == "float32",
         "depth": depth == "deep",
     }
     for name, missing in not_yet.items():
         if missing:
-            value = {"hessian": hessian, "dtype": dtype_name, "depth": depth}[name]
+            value = {"dtype": dtype_name, "depth": depth}[name]
             raise ValueError(f"{name}={value!r} is not graded by this version of hinge.conform_energy yet "
                              "(docs/energy-conformance.md, \"Not yet\")")
     if isinstance(k, bool) or not isinstance(k, (int, float, np.floating, np.integer)) or not (0 < float(k) < math.inf):

@@ -20,9 +20,8 @@ usage("the quadratic energy's Hessian is constant" --energy quadratic --hessian-
 usage("the quadratic energy takes no weight" --energy quadratic --weight unit --inputs)
 usage("\"viscoelastic\" is not graded" --energy viscoelastic --inputs)
 usage("unknown weight \"cotan\" \\(choices: contract, bridson, edge-length, unit\\)" --energy tan --weight cotan --inputs)
-usage("unknown Hessian treatment \"newton\" \\(choices: exact, gauss-newton\\)" --energy tan --hessian-kind newton
+usage("unknown Hessian treatment \"newton\" \\(choices: exact, gauss-newton, projected\\)" --energy tan --hessian-kind newton
       --inputs)
-usage("\"projected\" is not graded by this version yet" --energy tan --hessian-kind projected --inputs)
 usage("k must be finite and positive" --energy tan --k 0 --inputs)
 usage("depth \"quick\" only" --energy tan --depth deep --inputs)
 usage("exactly one of --inputs, --candidate, --plugin" --energy tan)

@@ -77,6 +77,9 @@ struct Grading {
   Dtype dtype = Dtype::float64;
   std::array<bool, 3> given{true, true, true};
   bool energy = false;  // the outputs are a bending term's psi, gradient and Hessian (energy_report.hpp)
+  // The best tier a passing case is given: Tier::policy where a reference is not certified (the projected
+  // Hessian's 256-bit evaluation), so that no tier claims more than the reference can.
+  Tier best = Tier::correctly_rounded;
 };
 // The name of output group g as `grading` grades it ("theta" or "energy", "grad", "hess").
 const char* group_name(const Grading& grading, int g);
