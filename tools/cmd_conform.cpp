@@ -15,7 +15,7 @@
 //     --plugin LIB.so [--symbol NAME] [--save FILE]   hinge_energy_candidate (hinge/candidate.h), on the pairs
 //                                    and the probes, in a child process as for theta
 //   with [--json FILE] [--report F.html] [--case-timeout S] [--verbose]; W one of contract, bridson,
-//   edge-length, unit (quadratic: none). Not offered yet (usage error): --depth deep.
+//   edge-length, unit (quadratic: none); --depth deep adds the hard families' pairs (conditioning computed then).
 // Exit status: 0 within the tolerance policy everywhere (and every consistency check passes), 1 not, 2 usage
 // error, unreadable candidate or a plugin that cannot be loaded.
 // The numerics (certified values, conditioning, policy, comparisons, consistency checks, report) are

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "construction.hpp"
@@ -119,11 +120,15 @@ const std::vector<std::string>& rest_kinds() {
   return kinds;
 }
 
-EnergyInputs energy_inputs(int per_category) {
-  const std::vector<Case> all = inputs();
+namespace {
+
+// `per_category` deformed hinges of each of `cats` among `all`, each with a rest hinge of every kind, the rest
+// hinges drawn from `seed`.
+EnergyInputs pair_with_rest_hinges(const std::vector<Case>& all, const std::vector<std::string>& cats, int per_category,
+                                   std::uint64_t seed) {
   EnergyInputs out;
-  Random r(0x5eede001);
-  for (const std::string& category : categories()) {
+  Random r(seed);
+  for (const std::string& category : cats) {
     std::vector<const Case*> members;
     for (const Case& c : all)
       if (c.category == category) members.push_back(&c);
@@ -161,6 +166,16 @@ EnergyInputs energy_inputs(int per_category) {
       for (EnergyCase& e : cases) out.cases.push_back(std::move(e));
   }
   return out;
+}
+
+}  // namespace
+
+EnergyInputs energy_inputs(int per_category) {
+  return pair_with_rest_hinges(inputs(), categories(), per_category, 0x5eede001);
+}
+
+EnergyInputs deep_energy_inputs(int per_family) {
+  return pair_with_rest_hinges(deep_inputs(), hard_families(), per_family, 0x5eede0d3);
 }
 
 }  // namespace hinge::conformance

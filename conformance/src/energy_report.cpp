@@ -50,7 +50,8 @@ Report make_energy_report(std::string candidate, const EnergySet& set, std::vect
   if (projected) grading.best = Tier::policy;  // the reference is not certified
   if (energy.diagonal_blocks)
     for (CandidateResult& r : results) keep_diagonal_blocks(r.hess.data());
-  Report r = make_report(std::move(candidate), std::move(expected), std::move(results), grading, stencil);
+  Report r = make_report(std::move(candidate), std::move(expected), std::move(results), grading, stencil,
+                         depth_name(set.depth));
   r.settings = {{"energy", energy_name(energy.problem)},
                 {"weight", energy.weight},
                 {"k", number(energy.problem.k)},

@@ -85,17 +85,20 @@ const std::map<std::string, std::array<double, 144>>& committed_projected(const 
 }  // namespace
 
 const EnergySet& energy_set(Model model, Depth depth) {
-  if (depth != Depth::quick) throw std::invalid_argument("the energy conformance offers depth \"quick\" only (yet)");
   if (model == Model::viscoelastic) throw std::invalid_argument("the viscoelastic energy is not graded");
   static std::mutex mutex;
-  static std::map<Model, EnergySet> cache;
+  static std::map<std::pair<Model, Depth>, EnergySet> cache;
   const std::lock_guard lock(mutex);
-  auto [it, fresh] = cache.try_emplace(model);
+  auto [it, fresh] = cache.try_emplace({model, depth});
   if (!fresh) return it->second;
+  it->second.depth = depth;
   EnergyInputs inputs = energy_inputs(energy_per_category);
+  if (depth == Depth::deep) {  // the quick pairs, then the hard families' (joining their categories in the report)
+    EnergyInputs deep = deep_energy_inputs(energy_per_family_deep);
+    for (EnergyCase& c : deep.cases) inputs.cases.push_back(std::move(c));
+    for (std::string& id : deep.left_out) inputs.left_out.push_back(std::move(id));
+  }
   for (std::string& id : inputs.left_out) it->second.left_out.push_back(id + ": |theta - theta_bar| > pi");
-  EnergyProblem problem;
-  problem.model = model;
   for (EnergyCase& c : inputs.cases) {
     if (infinite_at_pi(model)) try {
         const Mesh x = hinge_mesh(c.x), rest = hinge_mesh(c.rest);
@@ -112,10 +115,17 @@ const EnergySet& energy_set(Model model, Depth depth) {
 }
 
 const EnergySet& quadratic_set(Depth depth) {
-  if (depth != Depth::quick) throw std::invalid_argument("the energy conformance offers depth \"quick\" only (yet)");
-  static const EnergySet set = [] {
+  static std::mutex mutex;
+  static std::map<Depth, EnergySet> cache;
+  const std::lock_guard lock(mutex);
+  auto [it, fresh] = cache.try_emplace(depth);
+  if (!fresh) return it->second;
+  it->second = [depth] {
     EnergySet out;
-    const EnergyInputs inputs = energy_inputs(energy_per_category);
+    out.depth = depth;
+    EnergyInputs inputs = energy_inputs(energy_per_category);
+    if (depth == Depth::deep)
+      for (EnergyCase& c : deep_energy_inputs(energy_per_family_deep).cases) inputs.cases.push_back(std::move(c));
     std::vector<EnergyCase> flat, at_rest;
     for (const EnergyCase& c : inputs.cases) {
       const std::size_t slash = c.category.find('/');
@@ -125,14 +135,18 @@ const EnergySet& quadratic_set(Depth depth) {
       const std::string tag = c.id.substr(c.category.size() + 1);
       at_rest.push_back({deformed + "/at-rest/" + tag, deformed + "/at-rest", c.rest, c.rest});
     }
-    // In category order: each deformed category's flat pairs, then its at-rest ones.
-    for (const std::string& category : categories())
+    // In category order (the deep families not among the categories after them): each deformed category's
+    // flat pairs, then its at-rest ones.
+    std::vector<std::string> order = categories();
+    for (const std::string& family : hard_families())
+      if (std::find(order.begin(), order.end(), family) == order.end()) order.push_back(family);
+    for (const std::string& category : order)
       for (const auto* list : {&flat, &at_rest})
         for (const EnergyCase& c : *list)
           if (c.category.starts_with(category + "/")) out.cases.push_back(c);
     return out;
   }();
-  return set;
+  return it->second;
 }
 
 const EnergySet& energy_set_of(const EnergyProblem& problem, Depth depth) {
@@ -177,8 +191,19 @@ std::vector<Expected> energy_expectations(const EnergySet& set, const EnergyProb
   for (std::size_t i = 0; i < set.cases.size(); ++i) {
     const EnergyCase& c = set.cases[i];
     const auto found = table.find(c.id);
-    if (found == table.end()) throw std::logic_error("energies/" + energy + ".jsonl has no case " + c.id);
     const std::optional<double> w = weights.empty() ? std::nullopt : std::optional<double>(weights[i]);
+    if (found == table.end()) {  // a deep case: its conditioning (and a projected reference) computed now
+      if (c.id.find("/deep-") == std::string::npos)
+        throw std::logic_error("energies/" + energy + ".jsonl has no case " + c.id);
+      Expected e = energy_expected(c, problem, true, w);
+      if (diagonal_blocks) {
+        keep_diagonal_blocks(e.values.hess.data());
+        const double size = oracle::scaled_norm(e.values.hess.data(), 144);
+        e.conditioning.kappa[2] = size > 0 ? e.conditioning.scale[2] / size : 1.0;
+      }
+      out.push_back(std::move(e));
+      continue;
+    }
     const bool projected = problem.hessian == HessianKind::projected;
     EnergyProblem certified = problem;  // projected: the certified outputs, then the committed reference
     if (projected) certified.hessian = HessianKind::exact;

@@ -76,10 +76,11 @@ conf::Report grade(const std::string& candidate, const std::string& dtype, const
 
 // The set an energy name grades on ("custom": the shells set, whose pairs are all finite: only its
 // consistency base is used; "quadratic": its own, flat rest hinges).
-const conf::EnergySet& set_of(const std::string& energy) {
+const conf::EnergySet& set_of(const std::string& energy, const std::string& depth) {
   return parsed([&]() -> const auto& {
-    if (energy == "quadratic") return conf::quadratic_set();
-    return conf::energy_set(parse_model(energy == "custom" ? "shells" : energy));
+    const conf::Depth d = conf::parse_depth(depth);
+    if (energy == "quadratic") return conf::quadratic_set(d);
+    return conf::energy_set(parse_model(energy == "custom" ? "shells" : energy), d);
   });
 }
 
@@ -90,8 +91,8 @@ py::array_t<double> rows(const std::vector<std::array<double, 12>>& v) {
 }
 
 // (ids, categories, x (n, 12), rest (n, 12), left_out): the energy's graded pairs, the contract's order.
-py::tuple energy_set(const std::string& energy) {
-  const conf::EnergySet& set = set_of(energy);
+py::tuple energy_set(const std::string& energy, const std::string& depth) {
+  const conf::EnergySet& set = set_of(energy, depth);
   py::list ids, categories;
   std::vector<std::array<double, 12>> x, rest;
   for (const conf::EnergyCase& c : set.cases) {
@@ -103,14 +104,14 @@ py::tuple energy_set(const std::string& energy) {
   return py::make_tuple(ids, categories, rows(x), rows(rest), set.left_out);
 }
 
-std::vector<double> energy_weights(const std::string& energy, const std::string& weight) {
-  return parsed([&] { return conf::set_weights(set_of(energy), weight); });
+std::vector<double> energy_weights(const std::string& energy, const std::string& weight, const std::string& depth) {
+  return parsed([&] { return conf::set_weights(set_of(energy, depth), weight); });
 }
 
 // (x (m, 12), rest (m, 12), base): the consistency checks' probes in the contract's order, and the indices of
 // their base hinges in the energy's set.
-py::tuple consistency_probes(const std::string& energy, const std::string& dtype) {
-  const conf::EnergySet& set = set_of(energy);
+py::tuple consistency_probes(const std::string& energy, const std::string& dtype, const std::string& depth) {
+  const conf::EnergySet& set = set_of(energy, depth);
   const std::vector<std::size_t> base = conf::consistency_base(set);
   std::vector<conf::EnergyCase> cases;
   for (const std::size_t i : base) cases.push_back(set.cases[i]);
@@ -126,9 +127,9 @@ conf::Report energy_grade(const std::string& candidate, const std::string& energ
                           const Array& values, const Array& grad, const Array& hess, const std::vector<int>& status,
                           const std::vector<std::string>& errors, const std::vector<std::string>& notes,
                           const Array& probe_values, const Array& probe_grad, const Array& probe_hess,
-                          const std::vector<bool>& probe_ok) {
+                          const std::vector<bool>& probe_ok, const std::string& depth) {
   const conf::EnergyGrading eg = parsed([&] { return conf::energy_grading(energy, weight, k, hessian, diagonal); });
-  const conf::EnergySet& set = set_of(energy);
+  const conf::EnergySet& set = set_of(energy, depth);
   conf::Grading grading;
   grading.dtype = parsed([&] { return conf::parse_dtype(dtype); });
   grading.given = given;
@@ -206,13 +207,13 @@ void bind_conformance(py::module_& m) {
           },
           "path"_a);
   m.def("conformance_set", &conformance_set, "dtype"_a, "depth"_a);
-  m.def("energy_set", &energy_set, "energy"_a);
-  m.def("energy_weights", &energy_weights, "energy"_a, "weight"_a);
+  m.def("energy_set", &energy_set, "energy"_a, "depth"_a = "quick");
+  m.def("energy_weights", &energy_weights, "energy"_a, "weight"_a, "depth"_a = "quick");
   m.def("energy_weight_names", &conf::weight_names);
-  m.def("consistency_probes", &consistency_probes, "energy"_a, "dtype"_a);
+  m.def("consistency_probes", &consistency_probes, "energy"_a, "dtype"_a, "depth"_a = "quick");
   m.def("energy_grade", &energy_grade, "candidate"_a, "energy"_a, "k"_a, "hessian"_a, "weight"_a, "weights"_a,
         "diagonal"_a, "dtype"_a, "given"_a, "stencil"_a, "values"_a, "grad"_a, "hess"_a, "status"_a, "errors"_a,
-        "notes"_a, "probe_values"_a, "probe_grad"_a, "probe_hess"_a, "probe_ok"_a);
+        "notes"_a, "probe_values"_a, "probe_grad"_a, "probe_hess"_a, "probe_ok"_a, "depth"_a = "quick");
   m.def("conformance_grade", &grade, "candidate"_a, "dtype"_a, "depth"_a, "given"_a, "stencil"_a, "theta"_a, "grad"_a,
         "hess"_a, "status"_a, "errors"_a, "notes"_a = std::vector<std::string>{});
 }

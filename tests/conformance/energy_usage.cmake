@@ -23,7 +23,7 @@ usage("unknown weight \"cotan\" \\(choices: contract, bridson, edge-length, unit
 usage("unknown Hessian treatment \"newton\" \\(choices: exact, gauss-newton, projected\\)" --energy tan --hessian-kind newton
       --inputs)
 usage("k must be finite and positive" --energy tan --k 0 --inputs)
-usage("depth \"quick\" only" --energy tan --depth deep --inputs)
+usage("unknown depth" --energy tan --depth deeper --inputs)
 usage("exactly one of --inputs, --candidate, --plugin" --energy tan)
 usage("exactly one of --inputs, --candidate, --plugin" --energy tan --inputs --candidate ${WORK}/empty.jsonl)
 usage("not --method" --energy tan --method fast)

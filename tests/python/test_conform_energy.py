@@ -77,6 +77,16 @@ def projected(term):
     return projected_term
 
 
+def test_the_deep_depth_adds_the_hard_families_and_a_correct_term_still_passes():
+    quick = hinge.conform_energy(tan_term())
+    deep = hinge.conform_energy(tan_term(), depth="deep")
+    assert deep.passed, str(deep)
+    assert json.loads(deep.to_json())["depth"] == "deep"
+    count = lambda r: sum(c["cases"] for c in r.categories.values())  # noqa: E731
+    assert count(deep) >= count(quick) + 700
+    assert {"folded/flat", "combined/near-cut"} <= set(deep.categories)
+
+
 def test_a_projected_hessian_passes_against_the_256_bit_reference_at_best_at_tier_policy():
     r = hinge.conform_energy(projected(tan_term()), hessian="projected")
     assert r.passed, str(r)
@@ -220,7 +230,7 @@ def test_the_json_report_carries_settings_and_checks():
         {"energy": "quadratic", "weight": "unit"},
         {"hessian": "newton"},
         {"dtype": "float32"},
-        {"depth": "deep"},
+        {"depth": "deeper"},
         {"energy": "viscoelastic"},
         {"weight": "cotangent"},
         {"weight": 3.0},

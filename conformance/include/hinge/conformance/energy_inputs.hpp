@@ -45,4 +45,9 @@ struct EnergyInputs {
 // every kind. Pairs with |theta - theta_bar| > pi, judged on the certified angles, are left out and listed.
 EnergyInputs energy_inputs(int per_category);
 
+// The deep set's pairs: `per_family` deformed hinges of each hard family of the deep set (inputs.hpp,
+// deep_inputs: ids "<family>/deep-NNNN-<tag>"), spread over it, each with a rest hinge of every kind, as above
+// (ids "<family>/<kind>/deep-NNNN-<tag>").
+EnergyInputs deep_energy_inputs(int per_family);
+
 }  // namespace hinge::conformance

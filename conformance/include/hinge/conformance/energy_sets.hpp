@@ -15,13 +15,17 @@ namespace hinge::conformance {
 
 // The deformed hinges per conformance category behind the quick energy set (energy_inputs(per_category)).
 inline constexpr int energy_per_category = 10;
+// ... and per hard family behind the deep set's additional pairs (deep_energy_inputs): their conditioning is
+// computed at run time (about 15 ms a pair), not committed.
+inline constexpr int energy_per_family_deep = 20;
 
 // The graded pairs of an energy, in report order, and those left out: |theta - theta_bar| > pi, or an
-// infinite energy (tan with theta or theta_bar at +-pi), each "<id>: <why>". Built once per energy
-// (thread-safe); only Depth::quick is offered yet (std::invalid_argument for deep).
+// infinite energy (tan with theta or theta_bar at +-pi), each "<id>: <why>". Built once per energy and depth
+// (thread-safe). Depth::deep adds the hard families' pairs (deep_energy_inputs) to the quick ones.
 struct EnergySet {
   std::vector<EnergyCase> cases;
   std::vector<std::string> left_out;
+  Depth depth = Depth::quick;
 };
 const EnergySet& energy_set(Model model, Depth depth = Depth::quick);
 // The quadratic energy's pairs: each deformed hinge of energy_set's with its flat rest hinge (DEFORMED/flat),
