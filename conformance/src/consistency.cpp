@@ -359,7 +359,11 @@ std::vector<ConsistencyCheck> consistency_checks(const ConsistencyPlan& plan, co
       }
       third = std::sqrt(third);
     }
-    const double E_scale = normalizer(std::fabs(o.energy), 16 * k.u * gradE_norm * x_norm, c_energy);
+    // The energy's own rounding: a relative change 16 u of the coordinates moves it by up to
+    // ||grad E|| (16 u ||x||) + ||H|| (16 u ||x||)^2 / 2 (the second term where grad E vanishes: at rest).
+    const double moved = 16 * k.u * x_norm;
+    const double E_noise = gradE_norm * moved + H_norm * moved * moved / 2;
+    const double E_scale = normalizer(std::fabs(o.energy), E_noise, c_energy);
     const double g_scale = normalizer(g_norm, 16 * k.u * jacobian_norm * x_norm, c_grad);
     const double H_scale = normalizer(H_norm, third_missing.empty() ? 16 * k.u * third * x_norm : 0, c_hess);
 
@@ -471,12 +475,13 @@ std::vector<ConsistencyCheck> consistency_checks(const ConsistencyPlan& plan, co
       } else if (!dE.ok) {
         checks.push_back(k.not_evaluated(name, id, dE.missing));
       } else {
-        const double size = std::max(x_norm, norm(plan.x[p]));
+        const double size = std::max(x_norm, norm(plan.x[p])), shift = 16 * k.u * size;
         ConsistencyCheck r;
         r.check = name;
         r.case_id = id;
         r.discrepancy = relative(std::fabs(outputs[p].energy - o.energy), E_scale);
-        r.estimate = relative(16 * k.u * (std::fabs(o.energy) + gradE_norm * size), E_scale);
+        r.estimate =
+            relative(16 * k.u * std::fabs(o.energy) + gradE_norm * shift + H_norm * shift * shift / 2, E_scale);
         r.detail = "energy " + number(o.energy) + ", moved " + number(outputs[p].energy);
         checks.push_back(k.finish(r));
       }

@@ -259,6 +259,12 @@ std::vector<Finding> diagnose_energy(const std::vector<Expected>& expected, cons
   if (!any_failing) return {};
   EnergyHypotheses hypotheses(expected, problem, weights, diagonal_blocks);
   std::vector<Finding> findings = detail::explain_failures(hypotheses.build(), expected, results, outcomes, grading);
+  // A factor applies to every hinge: where several factors each lift some categories (ill-conditioned ones, whose
+  // `approximate` band is wide, admit many), only those lifting the most are the term's; the others are dropped.
+  std::size_t most = 0;
+  for (const Finding& f : findings)
+    if (f.key.starts_with("factor:")) most = std::max(most, f.categories.size());
+  std::erase_if(findings, [&](const Finding& f) { return f.key.starts_with("factor:") && f.categories.size() < most; });
   // Up to 36 categories: a finding that explains many is said in a few words, not listed.
   std::vector<std::string> failing;
   for (const CaseOutcome& o : outcomes)

@@ -103,13 +103,13 @@ const char* hessian_kind_name(HessianKind h) {
 }
 
 void apply_zero_energy_bound(Expected& e, const EnergyCase& c, const EnergyProblem& problem,
-                             std::optional<double> weight) {
+                             std::optional<double> weight, Dtype dtype) {
   if (e.values.theta != 0) return;
   const oracle::CertifiedTheta tx = oracle::certified_theta_derivatives(c.x);
   const oracle::CertifiedTheta tr = oracle::certified_theta_derivatives(c.rest);
   const double L = e.conditioning.length;
   const double s = L * (oracle::scaled_norm(tx.grad.data(), 12) + oracle::scaled_norm(tr.grad.data(), 12));
-  const double u = unit_roundoff(Dtype::float64);
+  const double u = unit_roundoff(dtype);
   const double bound = psi_second_at_rest(c.rest, problem, tr.theta, weight) * (16 * u * s) * (16 * u * s) / 2;
   const Policy policy;
   e.conditioning.scale[0] = bound / ((policy.base + policy.c * 1) * u);  // error <= tolerance iff |psi| <= bound

@@ -72,7 +72,14 @@ X12 sheared(X12 x, int v, double sign) {
 }
 
 // R with theta(R) == theta(x) exactly and another shape (energy_inputs.hpp).
-X12 rest_angle_rest(Random& r, const X12& x) {
+// Every coordinate zero or a normal float (held in the double).
+bool normal_floats(const X12& x) {
+  for (const double v : x)
+    if (v != static_cast<double>(static_cast<float>(v)) || (v != 0 && std::fabs(v) < 0x1p-126)) return false;
+  return true;
+}
+
+X12 rest_angle_rest(Random& r, const X12& x, bool float32) {
   const oracle::ExactHinge target = oracle::exact_hinge(x, false);
   const int magnitude = r.integer(1, 2);  // one draw per statement: a fixed order on every compiler
   const int k = r.sign() > 0 ? magnitude : -magnitude;
@@ -85,7 +92,9 @@ X12 rest_angle_rest(Random& r, const X12& x) {
     const X12 rest = scaled_by_power_of_two(turned, k);
     bool finite = true;
     for (double v : rest) finite = finite && std::isfinite(v) && (v == 0 || std::fabs(v) >= 0x1p-1000);
-    if (finite && valid(rest) && oracle::same_angle(oracle::exact_hinge(rest, false), target)) return rest;
+    if (finite && (!float32 || normal_floats(rest)) && valid(rest) &&
+        oracle::same_angle(oracle::exact_hinge(rest, false), target))
+      return rest;
   }
   throw std::logic_error("rest-angle: no exact construction");  // the last candidate is always exact
 }
@@ -123,9 +132,9 @@ const std::vector<std::string>& rest_kinds() {
 namespace {
 
 // `per_category` deformed hinges of each of `cats` among `all`, each with a rest hinge of every kind, the rest
-// hinges drawn from `seed`.
+// hinges drawn from `seed`; with `float32`, every rest coordinate a normal float (the drawn ones rounded to float).
 EnergyInputs pair_with_rest_hinges(const std::vector<Case>& all, const std::vector<std::string>& cats, int per_category,
-                                   std::uint64_t seed) {
+                                   std::uint64_t seed, bool float32 = false) {
   EnergyInputs out;
   Random r(seed);
   for (const std::string& category : cats) {
@@ -150,12 +159,17 @@ EnergyInputs pair_with_rest_hinges(const std::vector<Case>& all, const std::vect
           } else if (kind == "negative") rest = angled_rest(r, r.uniform(0.05, 0.5 * pi));  // theta_bar = -psi
           else if (kind == "near-cut") rest = near_cut_rest(r);
           else if (kind == "at-rest") rest = deformed.x;
-          else rest = rest_angle_rest(r, deformed.x);
-        } while (!valid(rest));
-        // The drawn rest hinges (edges 0.25 to 4 long) brought to the deformed hinge's size by a power of two
-        // (exact): a rest hinge 2^500 times larger than X would make the conditioning over X and R (L the
-        // longest of their edges) overflow, and no simulator pairs such shapes.
-        if (kind != "at-rest" && kind != "rest-angle") rest = scaled_by_power_of_two(rest, size_exponent(deformed.x));
+          else rest = rest_angle_rest(r, deformed.x, float32);
+          // The drawn rest hinges (edges 0.25 to 4 long) brought to the deformed hinge's size by a power of two
+          // (exact): a rest hinge 2^500 times larger than X would make the conditioning over X and R (L the
+          // longest of their edges) overflow, and no simulator pairs such shapes. In float32 then rounded to
+          // float: a flat rest hinge stays exactly flat (its four points share one coordinate, the offset's).
+          if (kind != "at-rest" && kind != "rest-angle") {
+            rest = scaled_by_power_of_two(rest, size_exponent(deformed.x));
+            if (float32)
+              for (double& v : rest) v = static_cast<double>(static_cast<float>(v));
+          }
+        } while (!valid(rest) || (float32 && !normal_floats(rest)));
         EnergyCase e{category + "/" + kind + "/" + tag, category + "/" + kind, deformed.x, rest};
         const double theta_bar = oracle::certified_theta_derivatives(rest).theta;
         if (std::fabs(theta - theta_bar) > pi) out.left_out.push_back(e.id);
@@ -172,6 +186,10 @@ EnergyInputs pair_with_rest_hinges(const std::vector<Case>& all, const std::vect
 
 EnergyInputs energy_inputs(int per_category) {
   return pair_with_rest_hinges(inputs(), categories(), per_category, 0x5eede001);
+}
+
+EnergyInputs float32_energy_inputs(int per_category) {
+  return pair_with_rest_hinges(float32_inputs(), categories(), per_category, 0x5eede032, true);
 }
 
 EnergyInputs deep_energy_inputs(int per_family) {

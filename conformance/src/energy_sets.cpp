@@ -2,11 +2,13 @@
 #include "hinge/conformance/energy_sets.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "hinge/core/errors.hpp"
 #include "hinge/core/mesh.hpp"
@@ -16,19 +18,33 @@
 namespace hinge::conformance {
 namespace {
 
+// Every nonzero output of e within float's normal range, [2^-126, FLT_MAX] in magnitude (once rounded to float).
+bool in_float_range(const Expected& e) {
+  const auto ok = [](double v) {
+    const double f = static_cast<double>(static_cast<float>(v));
+    return v == 0 || (std::isfinite(f) && std::fabs(f) >= 0x1p-126);
+  };
+  if (!ok(e.values.theta)) return false;
+  for (const double v : e.values.grad)
+    if (!ok(v)) return false;
+  for (const double v : e.values.hess)
+    if (!ok(v)) return false;
+  return true;
+}
+
 // The committed conditioning of an energy's cases (energies/<energy>.jsonl): for k = 1 and the contract's
 // weight, that of psi, the gradient and the exact Hessian, and of the Gauss-Newton Hessian.
 struct CommittedConditioning {
   oracle::Conditioning exact;
   double scale_gauss_newton = 0, kappa_gauss_newton = 0;
 };
-const std::map<std::string, CommittedConditioning>& committed(const std::string& energy) {
+const std::map<std::string, CommittedConditioning>& committed(const std::string& energy, Dtype dtype) {
   static std::mutex mutex;
   static std::map<std::string, std::map<std::string, CommittedConditioning>> cache;
   const std::lock_guard lock(mutex);
-  auto [it, fresh] = cache.try_emplace(energy);
+  const std::string name = energy_conditioning_file(energy, dtype);
+  auto [it, fresh] = cache.try_emplace(name);
   if (!fresh) return it->second;
-  const std::string name = "energies/" + energy + ".jsonl";
   const std::string_view text = embedded_file(name);
   std::size_t begin = 0;
   while (begin < text.size()) {
@@ -84,15 +100,43 @@ const std::map<std::string, std::array<double, 144>>& committed_projected(const 
 
 }  // namespace
 
-const EnergySet& energy_set(Model model, Depth depth) {
+namespace {
+
+// e's outputs rounded to float (held in doubles): the certified doubles, each within half a unit of double of
+// the exact value, round to the float nearest the exact value unless the double is a midpoint between two
+// floats; such an output is flagged uncertified (the exact value may lie on either side).
+void round_to_float(Expected& e) {
+  const auto round = [&](double& v, const std::string& name) {
+    const float f = static_cast<float>(v);
+    const float other = std::nextafter(f, v > static_cast<double>(f) ? INFINITY : -INFINITY);
+    if (v != static_cast<double>(f) && v == (static_cast<double>(f) + static_cast<double>(other)) / 2)
+      e.values.uncertified.push_back({name, "", "", static_cast<double>(f)});
+    v = static_cast<double>(f);
+  };
+  round(e.values.theta, "energy");
+  for (int i = 0; i < 12; ++i) round(e.values.grad[i], "grad[" + std::to_string(i) + "]");
+  for (int i = 0; i < 144; ++i) round(e.values.hess[i], "hess[" + std::to_string(i) + "]");
+}
+
+}  // namespace
+
+std::string energy_conditioning_file(const std::string& energy, Dtype dtype) {
+  return (dtype == Dtype::float32 ? "energies-float32/" : "energies/") + energy + ".jsonl";
+}
+
+const EnergySet& energy_set(Model model, Depth depth, Dtype dtype) {
   if (model == Model::viscoelastic) throw std::invalid_argument("the viscoelastic energy is not graded");
+  if (dtype == Dtype::float32 && depth == Depth::deep)
+    throw std::invalid_argument("the energy conformance in float32 offers depth \"quick\" only (yet)");
   static std::mutex mutex;
-  static std::map<std::pair<Model, Depth>, EnergySet> cache;
+  static std::map<std::tuple<Model, Depth, Dtype>, EnergySet> cache;
   const std::lock_guard lock(mutex);
-  auto [it, fresh] = cache.try_emplace({model, depth});
+  auto [it, fresh] = cache.try_emplace({model, depth, dtype});
   if (!fresh) return it->second;
   it->second.depth = depth;
-  EnergyInputs inputs = energy_inputs(energy_per_category);
+  it->second.dtype = dtype;
+  EnergyInputs inputs =
+      dtype == Dtype::float32 ? float32_energy_inputs(energy_per_category) : energy_inputs(energy_per_category);
   if (depth == Depth::deep) {  // the quick pairs, then the hard families' (joining their categories in the report)
     EnergyInputs deep = deep_energy_inputs(energy_per_family_deep);
     for (EnergyCase& c : deep.cases) inputs.cases.push_back(std::move(c));
@@ -100,11 +144,14 @@ const EnergySet& energy_set(Model model, Depth depth) {
   }
   for (std::string& id : inputs.left_out) it->second.left_out.push_back(id + ": |theta - theta_bar| > pi");
   for (EnergyCase& c : inputs.cases) {
-    if (infinite_at_pi(model)) try {
-        const Mesh x = hinge_mesh(c.x), rest = hinge_mesh(c.rest);
-        EnergyParameters p;
+    if (infinite_at_pi(model) || dtype == Dtype::float32) try {
+        EnergyProblem p;
         p.model = model;
-        oracle::certified_mesh(x, rest, build_topology(x), p, want_energy);
+        const Expected e = energy_expected(c, p, false);
+        if (dtype == Dtype::float32 && !in_float_range(e)) {
+          it->second.left_out.push_back(c.id + ": an output outside float's normal range");
+          continue;
+        }
       } catch (const DomainError& e) {
         it->second.left_out.push_back(c.id + ": " + e.what());
         continue;
@@ -114,16 +161,20 @@ const EnergySet& energy_set(Model model, Depth depth) {
   return it->second;
 }
 
-const EnergySet& quadratic_set(Depth depth) {
+const EnergySet& quadratic_set(Depth depth, Dtype dtype) {
+  if (dtype == Dtype::float32 && depth == Depth::deep)
+    throw std::invalid_argument("the energy conformance in float32 offers depth \"quick\" only (yet)");
   static std::mutex mutex;
-  static std::map<Depth, EnergySet> cache;
+  static std::map<std::pair<Depth, Dtype>, EnergySet> cache;
   const std::lock_guard lock(mutex);
-  auto [it, fresh] = cache.try_emplace(depth);
+  auto [it, fresh] = cache.try_emplace({depth, dtype});
   if (!fresh) return it->second;
-  it->second = [depth] {
+  it->second = [depth, dtype] {
     EnergySet out;
     out.depth = depth;
-    EnergyInputs inputs = energy_inputs(energy_per_category);
+    out.dtype = dtype;
+    EnergyInputs inputs =
+        dtype == Dtype::float32 ? float32_energy_inputs(energy_per_category) : energy_inputs(energy_per_category);
     if (depth == Depth::deep)
       for (EnergyCase& c : deep_energy_inputs(energy_per_family_deep).cases) inputs.cases.push_back(std::move(c));
     std::vector<EnergyCase> flat, at_rest;
@@ -149,8 +200,8 @@ const EnergySet& quadratic_set(Depth depth) {
   return it->second;
 }
 
-const EnergySet& energy_set_of(const EnergyProblem& problem, Depth depth) {
-  return problem.quadratic ? quadratic_set(depth) : energy_set(problem.model, depth);
+const EnergySet& energy_set_of(const EnergyProblem& problem, Depth depth, Dtype dtype) {
+  return problem.quadratic ? quadratic_set(depth, dtype) : energy_set(problem.model, depth, dtype);
 }
 
 const std::vector<std::string>& weight_names() {
@@ -178,14 +229,12 @@ void keep_diagonal_blocks(double* hess) {
 
 std::vector<Expected> energy_expectations(const EnergySet& set, const EnergyProblem& problem,
                                           const std::vector<double>& weights, Dtype dtype, bool diagonal_blocks) {
-  if (dtype != Dtype::float64)
-    throw std::invalid_argument(
-        "the energy conformance offers dtype \"float64\" only (yet): its cases are not float32");
+  if (dtype != set.dtype) throw std::invalid_argument("energy_expectations: the set is for another dtype");
   if (!weights.empty() && weights.size() != set.cases.size())
     throw std::invalid_argument("energy_expectations: one weight per case");
   if (problem.quadratic && !weights.empty()) throw std::invalid_argument("the quadratic energy takes no weight");
   const std::string energy = energy_name(problem);
-  const auto& table = committed(energy);
+  const auto& table = committed(energy, dtype);
   std::vector<Expected> out;
   out.reserve(set.cases.size());
   for (std::size_t i = 0; i < set.cases.size(); ++i) {
@@ -205,6 +254,8 @@ std::vector<Expected> energy_expectations(const EnergySet& set, const EnergyProb
       continue;
     }
     const bool projected = problem.hessian == HessianKind::projected;
+    if (projected && dtype == Dtype::float32)
+      throw std::invalid_argument("hessian \"projected\" is graded in float64 only (its reference is not a float's)");
     EnergyProblem certified = problem;  // projected: the certified outputs, then the committed reference
     if (projected) certified.hessian = HessianKind::exact;
     Expected e = energy_expected(c, certified, false, w);
@@ -225,7 +276,8 @@ std::vector<Expected> energy_expectations(const EnergySet& set, const EnergyProb
       e.values.uncertified.clear();  // the Hessian is not certified at all: the report says so
       set_projected_kappa(e);
     }
-    if (e.values.theta == 0) apply_zero_energy_bound(e, c, problem, w);
+    if (dtype == Dtype::float32) round_to_float(e);
+    if (e.values.theta == 0) apply_zero_energy_bound(e, c, problem, w, dtype);
     if (diagonal_blocks) {
       keep_diagonal_blocks(e.values.hess.data());
       const double size = oracle::scaled_norm(e.values.hess.data(), 144);

@@ -161,7 +161,8 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
   SetWriter w{dir, progress};
   w.total = quick.size() + float32.size() + deep.size() + deep32.size();
   for (const Model model : graded_energies) w.total += 2 * energy_set(model).cases.size();
-  w.total += quadratic_set().cases.size();
+  w.total += quadratic_set().cases.size() + quadratic_set(Depth::quick, Dtype::float32).cases.size();
+  for (const Model model : graded_energies) w.total += energy_set(model, Depth::quick, Dtype::float32).cases.size();
   std::size_t none = 0;
   summary.quick = w.write("hinges", categories(), quick, false, true, none, none);
   summary.float32 = w.write("hinges-float32", categories(), float32, true, true, none, none);
@@ -188,6 +189,26 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
   {
     io::AtomicFile f((dir / "energies" / "quadratic.jsonl").string());
     for (const EnergyCase& c : quadratic_set().cases) {
+      if (progress) progress(++w.done, w.total);
+      f.stream() << quadratic_line(c);
+      ++summary.energy_cases;
+    }
+    f.commit();
+  }
+  // The float32 pairs' conditioning (of the exact values: the same lines' format; no projected references).
+  fs::create_directories(dir / "energies-float32");
+  for (const Model model : graded_energies) {
+    io::AtomicFile f((dir / "energies-float32" / (std::string(model_name(model)) + ".jsonl")).string());
+    for (const EnergyCase& c : energy_set(model, Depth::quick, Dtype::float32).cases) {
+      if (progress) progress(++w.done, w.total);
+      f.stream() << energy_line(c, model);
+      ++summary.energy_cases;
+    }
+    f.commit();
+  }
+  {
+    io::AtomicFile f((dir / "energies-float32" / "quadratic.jsonl").string());
+    for (const EnergyCase& c : quadratic_set(Depth::quick, Dtype::float32).cases) {
       if (progress) progress(++w.done, w.total);
       f.stream() << quadratic_line(c);
       ++summary.energy_cases;

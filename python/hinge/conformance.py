@@ -365,7 +365,9 @@ def conform_energy(
     differences of the energy, Hessian against differences of the gradient, symmetry, rigid motions, net
     force and torque); a failed check fails the run. Returns a Report (``settings``, ``checks`` besides the
     theta kit's). Raises ValueError for a bad argument or an output of the wrong shape or dtype, and for what
-    this version does not grade yet: dtype="float32". depth="deep" adds 20 hinges of each hard family with
+    this version does not grade yet: depth="deep" or hessian="projected" with dtype="float32". dtype="float32"
+    grades on the float32 pairs (every coordinate a normal float), the term's outputs rounded to float, in
+    units of 2^-24. depth="deep" adds 20 hinges of each hard family with
     every kind of rest hinge (about 900 pairs) whose condition numbers are computed at run time: about 15 ms
     a pair.
     """
@@ -382,13 +384,14 @@ def conform_energy(
     if energy == "quadratic" and not (isinstance(weight, str) and weight == "contract"):
         raise ValueError("weight=: the quadratic energy takes no weight (its 3 / A_bar is part of its definition)")
     not_yet = {
-        "dtype": dtype_name == "float32",
+        "depth": dtype_name == "float32" and depth == "deep",
+        "hessian": dtype_name == "float32" and hessian == "projected",
     }
     for name, missing in not_yet.items():
         if missing:
-            value = {"dtype": dtype_name}[name]
-            raise ValueError(f"{name}={value!r} is not graded by this version of hinge.conform_energy yet "
-                             "(docs/energy-conformance.md, \"Not yet\")")
+            value = {"depth": depth, "hessian": hessian}[name]
+            raise ValueError(f"{name}={value!r} with dtype='float32' is not graded by this version of "
+                             "hinge.conform_energy yet (docs/energy-conformance.md, \"Not yet\")")
     if isinstance(k, bool) or not isinstance(k, (int, float, np.floating, np.integer)) or not (0 < float(k) < math.inf):
         raise ValueError(f"k= must be a finite positive number; got {k!r}")
     if not isinstance(batch, (bool, np.bool_)):
@@ -397,7 +400,7 @@ def conform_energy(
     order = _stencil_indices(stencil)
     columns = np.array([3 * order[j] + c for j in range(4) for c in range(3)])
 
-    ids, _, x, rest, _ = _hinge.energy_set(energy, depth)
+    ids, _, x, rest, _ = _hinge.energy_set(energy, depth, dtype_name)
     n = len(ids)
     rest_candidate = np.ascontiguousarray(rest[:, columns], dtype=dtype_name)
     label, w = ("none", None) if energy == "quadratic" else _weights(weight, rest_candidate)

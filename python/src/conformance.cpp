@@ -76,11 +76,12 @@ conf::Report grade(const std::string& candidate, const std::string& dtype, const
 
 // The set an energy name grades on ("custom": the shells set, whose pairs are all finite: only its
 // consistency base is used; "quadratic": its own, flat rest hinges).
-const conf::EnergySet& set_of(const std::string& energy, const std::string& depth) {
+const conf::EnergySet& set_of(const std::string& energy, const std::string& depth, const std::string& dtype) {
   return parsed([&]() -> const auto& {
     const conf::Depth d = conf::parse_depth(depth);
-    if (energy == "quadratic") return conf::quadratic_set(d);
-    return conf::energy_set(parse_model(energy == "custom" ? "shells" : energy), d);
+    const conf::Dtype t = conf::parse_dtype(dtype);
+    if (energy == "quadratic") return conf::quadratic_set(d, t);
+    return conf::energy_set(parse_model(energy == "custom" ? "shells" : energy), d, t);
   });
 }
 
@@ -91,8 +92,8 @@ py::array_t<double> rows(const std::vector<std::array<double, 12>>& v) {
 }
 
 // (ids, categories, x (n, 12), rest (n, 12), left_out): the energy's graded pairs, the contract's order.
-py::tuple energy_set(const std::string& energy, const std::string& depth) {
-  const conf::EnergySet& set = set_of(energy, depth);
+py::tuple energy_set(const std::string& energy, const std::string& depth, const std::string& dtype) {
+  const conf::EnergySet& set = set_of(energy, depth, dtype);
   py::list ids, categories;
   std::vector<std::array<double, 12>> x, rest;
   for (const conf::EnergyCase& c : set.cases) {
@@ -104,14 +105,15 @@ py::tuple energy_set(const std::string& energy, const std::string& depth) {
   return py::make_tuple(ids, categories, rows(x), rows(rest), set.left_out);
 }
 
-std::vector<double> energy_weights(const std::string& energy, const std::string& weight, const std::string& depth) {
-  return parsed([&] { return conf::set_weights(set_of(energy, depth), weight); });
+std::vector<double> energy_weights(const std::string& energy, const std::string& weight, const std::string& depth,
+                                   const std::string& dtype) {
+  return parsed([&] { return conf::set_weights(set_of(energy, depth, dtype), weight); });
 }
 
 // (x (m, 12), rest (m, 12), base): the consistency checks' probes in the contract's order, and the indices of
 // their base hinges in the energy's set.
 py::tuple consistency_probes(const std::string& energy, const std::string& dtype, const std::string& depth) {
-  const conf::EnergySet& set = set_of(energy, depth);
+  const conf::EnergySet& set = set_of(energy, depth, dtype);
   const std::vector<std::size_t> base = conf::consistency_base(set);
   std::vector<conf::EnergyCase> cases;
   for (const std::size_t i : base) cases.push_back(set.cases[i]);
@@ -129,7 +131,7 @@ conf::Report energy_grade(const std::string& candidate, const std::string& energ
                           const Array& probe_values, const Array& probe_grad, const Array& probe_hess,
                           const std::vector<bool>& probe_ok, const std::string& depth) {
   const conf::EnergyGrading eg = parsed([&] { return conf::energy_grading(energy, weight, k, hessian, diagonal); });
-  const conf::EnergySet& set = set_of(energy, depth);
+  const conf::EnergySet& set = set_of(energy, depth, dtype);
   conf::Grading grading;
   grading.dtype = parsed([&] { return conf::parse_dtype(dtype); });
   grading.given = given;
@@ -207,8 +209,8 @@ void bind_conformance(py::module_& m) {
           },
           "path"_a);
   m.def("conformance_set", &conformance_set, "dtype"_a, "depth"_a);
-  m.def("energy_set", &energy_set, "energy"_a, "depth"_a = "quick");
-  m.def("energy_weights", &energy_weights, "energy"_a, "weight"_a, "depth"_a = "quick");
+  m.def("energy_set", &energy_set, "energy"_a, "depth"_a = "quick", "dtype"_a = "float64");
+  m.def("energy_weights", &energy_weights, "energy"_a, "weight"_a, "depth"_a = "quick", "dtype"_a = "float64");
   m.def("energy_weight_names", &conf::weight_names);
   m.def("consistency_probes", &consistency_probes, "energy"_a, "dtype"_a, "depth"_a = "quick");
   m.def("energy_grade", &energy_grade, "candidate"_a, "energy"_a, "k"_a, "hessian"_a, "weight"_a, "weights"_a,

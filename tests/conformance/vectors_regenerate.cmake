@@ -24,7 +24,7 @@ foreach(f IN LISTS generated)
   endif()
 endforeach()
 # A committed vector the generator no longer writes is stale (and would still be compiled in).
-foreach(set_dir hinges hinges-float32 deep deep-float32 energies meshes)
+foreach(set_dir hinges hinges-float32 deep deep-float32 energies energies-float32 meshes)
   file(GLOB committed_files RELATIVE ${COMMITTED} ${COMMITTED}/${set_dir}/*)
   foreach(f IN LISTS committed_files)
     if(NOT EXISTS ${WORK}/${f})

@@ -24,10 +24,10 @@ def edge_length(R):
 
 def contract_weight(R):
     """w = 3 |e_bar|^2 / A_bar, A_bar the two rest triangles' areas (scale-free)."""
-    V, _ = edge_vectors(R)
-    e = V[:, 2] - V[:, 1]
-    n0 = np.cross(V[:, 1] - V[:, 0], V[:, 2] - V[:, 0])
-    n3 = np.cross(V[:, 2] - V[:, 3], V[:, 1] - V[:, 3])
+    V, _ = edge_vectors(R)  # x1 at the origin
+    e = V[:, 2]
+    n0 = np.cross(e, V[:, 0])  # the triangles' normals from the hinge edge: no long edge cancels a short one
+    n3 = np.cross(e, V[:, 3])
     area = (np.linalg.norm(n0, axis=1) + np.linalg.norm(n3, axis=1)) / 2
     return 3 * np.einsum("ij,ij->i", e, e) / area
 

@@ -77,6 +77,46 @@ def projected(term):
     return projected_term
 
 
+def mixed_precision(term):
+    """A float32 kernel that computes in double: float32 arrays in, float32 arrays out."""
+
+    def kernel(X, R):
+        assert X.dtype == np.float32 and R.dtype == np.float32
+        return tuple(np.asarray(a, dtype=np.float32) for a in term(X.astype(np.float64), R.astype(np.float64)))
+
+    return kernel
+
+
+@pytest.mark.parametrize("energy, term", [("tan", tan_term), ("shells", shells_term), ("quadratic", quadratic_term)])
+def test_float32_terms_pass_on_the_float32_pairs(energy, term):
+    r = hinge.conform_energy(mixed_precision(term()), energy=energy, dtype="float32")
+    assert r.passed, str(r)
+    assert "2^-24" in str(r)
+
+
+def test_in_float32_the_missing_3_and_the_rest_angle_off_by_2pi_are_named_alone():
+    third = hinge.conform_energy(mixed_precision(tan_term(weight=lambda R: contract_weight(R) / 3)), dtype="float32")
+    assert not third.passed and len(third.diagnosis) == 1 and "1/3 times the declared one" in third.diagnosis[0]
+    shifted = shells_term(rest_angle=lambda tb: np.where(tb < 0, tb + 2 * np.pi, tb))
+    r = hinge.conform_energy(mixed_precision(shifted), energy="shells", dtype="float32")
+    assert not r.passed and "[0, 2 pi)" in sentence(r)
+
+
+def test_a_float32_weight_from_long_edges_fails_where_the_edges_are_long():
+    # The weight computed in float32 from a needle's long edges cancels (its cross product loses every digit).
+    def float32_weight(R):
+        V = R.reshape(-1, 4, 3)  # float32 arithmetic throughout
+        n0 = np.cross(V[:, 1] - V[:, 0], V[:, 2] - V[:, 0])
+        n3 = np.cross(V[:, 2] - V[:, 3], V[:, 1] - V[:, 3])
+        e = V[:, 2] - V[:, 1]
+        return 6 * np.einsum("ij,ij->i", e, e) / (np.linalg.norm(n0, axis=1) + np.linalg.norm(n3, axis=1))
+
+    term = tan_term(weight=float32_weight)
+    r = hinge.conform_energy(lambda X, R: tuple(np.asarray(a, np.float32) for a in term(X, R)), dtype="float32")
+    assert not r.passed
+    assert r.categories["needles/at-rest"]["tier"] in ("fail", "approximate")
+
+
 def test_the_deep_depth_adds_the_hard_families_and_a_correct_term_still_passes():
     quick = hinge.conform_energy(tan_term())
     deep = hinge.conform_energy(tan_term(), depth="deep")
@@ -229,7 +269,8 @@ def test_the_json_report_carries_settings_and_checks():
         {"energy": "quadratic", "hessian": "gauss-newton"},
         {"energy": "quadratic", "weight": "unit"},
         {"hessian": "newton"},
-        {"dtype": "float32"},
+        {"dtype": "float32", "depth": "deep"},
+        {"dtype": "float32", "hessian": "projected"},
         {"depth": "deeper"},
         {"energy": "viscoelastic"},
         {"weight": "cotangent"},

@@ -48,7 +48,8 @@ void set_projected_kappa(Expected& e);
 
 // Where e's psi is exactly zero: its energy scale set (and kappa 1) so that the default policy allows exactly
 // the contract's bound above (energy_expected does this; for conditioning taken from elsewhere).
+// u is the dtype's unit roundoff.
 void apply_zero_energy_bound(Expected& e, const EnergyCase& c, const EnergyProblem& problem,
-                             std::optional<double> weight = std::nullopt);
+                             std::optional<double> weight = std::nullopt, Dtype dtype = Dtype::float64);
 
 }  // namespace hinge::conformance

@@ -50,4 +50,8 @@ EnergyInputs energy_inputs(int per_category);
 // (ids "<family>/<kind>/deep-NNNN-<tag>").
 EnergyInputs deep_energy_inputs(int per_family);
 
+// The float32 set's pairs: the float32 conformance inputs (inputs.hpp, float32_inputs) with rest hinges of every
+// kind, every rest coordinate zero or a normal float.
+EnergyInputs float32_energy_inputs(int per_category);
+
 }  // namespace hinge::conformance

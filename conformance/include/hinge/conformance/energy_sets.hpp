@@ -26,13 +26,18 @@ struct EnergySet {
   std::vector<EnergyCase> cases;
   std::vector<std::string> left_out;
   Depth depth = Depth::quick;
+  Dtype dtype = Dtype::float64;
 };
-const EnergySet& energy_set(Model model, Depth depth = Depth::quick);
+// Dtype::float32: the float32 pairs (float32_energy_inputs: every coordinate a normal float), those whose
+// outputs (k = 1, the contract's weight) leave float's normal range left out; quick depth only.
+const EnergySet& energy_set(Model model, Depth depth = Depth::quick, Dtype dtype = Dtype::float64);
 // The quadratic energy's pairs: each deformed hinge of energy_set's with its flat rest hinge (DEFORMED/flat),
 // and that rest hinge at rest (DEFORMED/at-rest: X = R, flat); nothing is left out (theta_bar = 0).
-const EnergySet& quadratic_set(Depth depth = Depth::quick);
+const EnergySet& quadratic_set(Depth depth = Depth::quick, Dtype dtype = Dtype::float64);
 // The set of `problem`'s energy.
-const EnergySet& energy_set_of(const EnergyProblem& problem, Depth depth = Depth::quick);
+const EnergySet& energy_set_of(const EnergyProblem& problem, Depth depth = Depth::quick, Dtype dtype = Dtype::float64);
+// The committed conditioning file of an energy in a dtype: "energies/tan.jsonl", "energies-float32/tan.jsonl".
+std::string energy_conditioning_file(const std::string& energy, Dtype dtype);
 
 // The weights a simulator's bending term may use in place of the contract's (docs/energy-conformance.md,
 // "Weights", with their sources): "contract" (3 |e_bar|^2 / A_bar, Grinspun et al. 2003), "bridson"
