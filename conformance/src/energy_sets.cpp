@@ -32,6 +32,23 @@ bool in_float_range(const Expected& e) {
   return true;
 }
 
+// Each line of the compiled-in JSON Lines file `name`, parsed (std::logic_error for a line that is not JSON).
+template <class F>
+void for_each_line(const std::string& name, F f) {
+  const std::string_view text = embedded_file(name);
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(begin, end - begin);
+    begin = end + 1;
+    if (line.empty()) continue;
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_discarded()) throw std::logic_error("conformance set " + name + ": a line is not JSON");
+    f(j);
+  }
+}
+
 // The committed conditioning of an energy's cases (energies/<energy>.jsonl): for k = 1 and the contract's
 // weight, that of psi, the gradient and the exact Hessian, and of the Gauss-Newton Hessian.
 struct CommittedConditioning {
@@ -45,16 +62,7 @@ const std::map<std::string, CommittedConditioning>& committed(const std::string&
   const std::string name = energy_conditioning_file(energy, dtype);
   auto [it, fresh] = cache.try_emplace(name);
   if (!fresh) return it->second;
-  const std::string_view text = embedded_file(name);
-  std::size_t begin = 0;
-  while (begin < text.size()) {
-    std::size_t end = text.find('\n', begin);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = text.substr(begin, end - begin);
-    begin = end + 1;
-    if (line.empty()) continue;
-    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
-    if (j.is_discarded()) throw std::logic_error("conformance set " + name + ": a line is not JSON");
+  for_each_line(name, [&](const nlohmann::json& j) {
     CommittedConditioning c;
     c.exact.length = j.at("length").get<double>();
     c.exact.scale = j.at("scale").get<std::array<double, 3>>();
@@ -64,7 +72,7 @@ const std::map<std::string, CommittedConditioning>& committed(const std::string&
       c.kappa_gauss_newton = j.at("kappa_gauss_newton").get<double>();
     }
     it->second.emplace(j.at("id").get<std::string>(), c);
-  }
+  });
   return it->second;
 }
 
@@ -77,16 +85,7 @@ const std::map<std::string, std::array<double, 144>>& committed_projected(const 
   auto [it, fresh] = cache.try_emplace(energy);
   if (!fresh) return it->second;
   const std::string name = "energies/" + energy + ".projected.jsonl";
-  const std::string_view text = embedded_file(name);
-  std::size_t begin = 0;
-  while (begin < text.size()) {
-    std::size_t end = text.find('\n', begin);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = text.substr(begin, end - begin);
-    begin = end + 1;
-    if (line.empty()) continue;
-    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
-    if (j.is_discarded()) throw std::logic_error("conformance set " + name + ": a line is not JSON");
+  for_each_line(name, [&](const nlohmann::json& j) {
     const auto upper = j.at("hess_upper").get<std::vector<double>>();
     if (upper.size() != 78) throw std::logic_error("conformance set " + name + ": hess_upper needs 78 numbers");
     std::array<double, 144> h{};
@@ -94,7 +93,7 @@ const std::map<std::string, std::array<double, 144>>& committed_projected(const 
     for (int row = 0; row < 12; ++row)
       for (int col = row; col < 12; ++col) h[12 * row + col] = h[12 * col + row] = upper[k++];
     it->second.emplace(j.at("id").get<std::string>(), h);
-  }
+  });
   return it->second;
 }
 
