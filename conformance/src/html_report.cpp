@@ -582,10 +582,16 @@ void reproducer(std::ostream& out, const Report& r, const Expected& e, const Cas
   out << "<h3 id=\"reproducer\">Reproducer</h3>\n<p>The 12 inputs, in the contract's order (x0.x, x0.y, &hellip;, "
          "x3.z):</p>\n<pre>";
   out << python_list(e.input.x.data(), 12, 3, 1) << "</pre>\n<p>In your kernel's order (stencil "
-      << escape(stencil_name(r.stencil)) << "):</p>\n<pre>" << python_list(xc.data(), 12, 3, 1)
-      << "</pre>\n<p>Expected outputs, the contract's order (every number exact"
+      << escape(stencil_name(r.stencil)) << "):</p>\n<pre>" << python_list(xc.data(), 12, 3, 1) << "</pre>\n";
+  std::array<double, 12> rc{};  // a bending term's rest hinge, in its order
+  if (e.input.rest) {
+    rc = candidate_order(*e.input.rest, r.stencil);
+    out << "<p>The rest hinge R, the contract's order:</p>\n<pre>" << python_list(e.input.rest->data(), 12, 3, 1)
+        << "</pre>\n<p>In your kernel's order:</p>\n<pre>" << python_list(rc.data(), 12, 3, 1) << "</pre>\n";
+  }
+  out << "<p>Expected outputs, the contract's order (every number exact"
       << (f32 ? ": the exact value correctly rounded to float32" : ": the double nearest the exact value")
-      << "):</p>\n<pre>theta = " << exact(e.values.theta) << "\ngrad = ";
+      << "):</p>\n<pre>" << group_name(gr, 0) << " = " << exact(e.values.theta) << "\ngrad = ";
   out << python_list(e.values.grad.data(), 12, 3, 8) << "\nhess = " << python_matrix(e.values.hess.data(), 8)
       << "</pre>\n";
 
@@ -604,7 +610,11 @@ void reproducer(std::ostream& out, const Report& r, const Expected& e, const Cas
 
   std::string code;
   const auto put = [&](const std::string& s) { code += s; };
-  put("import numpy as np\n\nfrom my_module import my_kernel  # your function: my_kernel(X), X of shape (n, 12)\n\n");
+  const bool energy = e.input.rest.has_value();
+  put(energy ? "import numpy as np\n\nfrom my_module import my_term  # your function: my_term(X, R), both of shape (n, "
+               "12)\n\n"
+             : "import numpy as np\n\nfrom my_module import my_kernel  # your function: my_kernel(X), X of shape (n, "
+               "12)\n\n");
   put("# hinge conform: case " + e.input.id + ", " + dtype_name(gr.dtype) + ", stencil " + stencil_name(r.stencil) +
       ".\n");
   put("# Each output group passes when ||got - expected|| / (u ||expected||) <= BASE + C * KAPPA[group]\n");
@@ -613,8 +623,9 @@ void reproducer(std::ostream& out, const Report& r, const Expected& e, const Cas
       exact(gr.policy.c) + "\nOUTPUTS = (" + outputs + (outputs.find(',') == std::string::npos ? ",)" : ")") +
       "  # the order of a returned tuple\n");
   put("X = np.array([" + python_list(xc.data(), 12, 3, 15) + "], dtype=" + dtype + ")  # one hinge, your order\n");
+  if (energy) put("R = np.array([" + python_list(rc.data(), 12, 3, 15) + "], dtype=" + dtype + ")  # its rest hinge\n");
   put("EXPECTED = {  # your variable order\n");
-  if (gr.given[0]) put("    \"theta\": np.array([" + python(e.values.theta) + "]),\n");
+  if (gr.given[0]) put("    \"" + std::string(group_name(gr, 0)) + "\": np.array([" + python(e.values.theta) + "]),\n");
   if (gr.given[1]) put("    \"grad\": np.array(" + python_list(grad.data(), 12, 3, 22) + "),\n");
   if (gr.given[2]) put("    \"hess\": np.array(" + python_matrix(hess.data(), 22) + "),\n");
   put("}\nKAPPA = {");
@@ -629,8 +640,11 @@ void reproducer(std::ostream& out, const Report& r, const Expected& e, const Cas
       "    v = np.asarray(v, dtype=np.float64).ravel()\n"
       "    m = np.max(np.abs(v))\n"
       "    return m if m == 0 or not np.isfinite(m) else m * np.linalg.norm(v / m)\n\n\n");
-  put("def test_worst_case():\n    out = my_kernel(X.copy())  # with batch=False: my_kernel(X[0].copy())\n"
-      "    got = {k: out[k] for k in OUTPUTS} if isinstance(out, dict) else dict(zip(OUTPUTS, out))\n"
+  put(energy
+          ? "def test_worst_case():\n    out = my_term(X.copy(), R.copy())  # with batch=False: my_term(X[0].copy(), "
+            "R[0].copy())\n"
+          : "def test_worst_case():\n    out = my_kernel(X.copy())  # with batch=False: my_kernel(X[0].copy())\n");
+  put("    got = {k: out[k] for k in OUTPUTS} if isinstance(out, dict) else dict(zip(OUTPUTS, out))\n"
       "    for name, expected in EXPECTED.items():\n");
   put(std::string("        g = np.asarray(got[name]") + (f32 ? ").astype(np.float32)" : ")") +
       ".astype(np.float64).reshape(expected.shape)\n");
@@ -718,8 +732,11 @@ void write_html_report(std::ostream& out, const Report& report) {
   category_table(out, report);
   scatters(out, report);
   worst_case(out, report);
-  out << "<footer class=\"note\"><p>hinge conform: the theta, gradient and Hessian of the bend angle of "
-         "Tamstorf &amp; Grinspun 2013 against certified values (docs/conformance.md).</p></footer>\n"
+  out << (report.grading.energy
+              ? "<footer class=\"note\"><p>hinge conform: a bending term's energy, gradient and Hessian against "
+                "certified values (docs/energy-conformance.md).</p></footer>\n"
+              : "<footer class=\"note\"><p>hinge conform: the theta, gradient and Hessian of the bend angle of "
+                "Tamstorf &amp; Grinspun 2013 against certified values (docs/conformance.md).</p></footer>\n")
       << "</main></body></html>\n";
 }
 

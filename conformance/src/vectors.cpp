@@ -1,7 +1,12 @@
 // The committed conformance vectors, written (hinge/conformance/vectors.hpp, docs/conformance-format.md).
 // Every hinge case certified by certified_with_conditioning (stages 1 and 2 of the oracle, so that "bits"
 // records the enclosures' precision), in binary64 or binary32.
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "hinge/conformance/energy_sets.hpp"
 #include "hinge/conformance/grading.hpp"
@@ -118,6 +123,37 @@ std::string energy_line(const EnergyCase& c, Model model) {
   return line + "}\n";
 }
 
+// line(c) for every case, on every core (each line depends on its case alone, and the oracle's working
+// precision is per thread), in the cases' order; progress reported as each completes. The first exception a
+// thread meets is rethrown.
+template <class Line>
+std::vector<std::string> energy_lines(const std::vector<EnergyCase>& cases, Line line, SetWriter& w) {
+  std::vector<std::string> out(cases.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;  // progress and the first error
+  std::exception_ptr error;
+  const auto work = [&] {
+    for (std::size_t i; (i = next++) < cases.size();) {
+      try {
+        out[i] = line(cases[i]);
+      } catch (...) {
+        const std::lock_guard lock(mutex);
+        if (!error) error = std::current_exception();
+        return;
+      }
+      const std::lock_guard lock(mutex);
+      ++w.done;
+      if (w.progress) w.progress(w.done, w.total);
+    }
+  };
+  std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
+  for (std::thread& t : threads) t = std::thread(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
+  return out;
+}
+
 constexpr Model graded_energies[] = {Model::shells, Model::tan, Model::willmore, Model::bridson};
 
 // One line of energies/<energy>.projected.jsonl: the 256-bit projected Hessian (k = 1, the contract's weight),
@@ -172,49 +208,34 @@ VectorsSummary write_vectors(const std::filesystem::path& dir,
   summary.deep_float32_invalid = summary.deep_float32_draws - deep32.size();
   summary.deep_float32 = w.write("deep-float32", hard_families(), deep32, true, false, summary.deep_float32_invalid,
                                  summary.deep_float32_uncertified);
+  // The energies' lines, each case's independent of the others: made on every core (energy_lines).
+  const auto write = [&](const fs::path& path, const std::vector<EnergyCase>& cases, auto line) {
+    io::AtomicFile f(path.string());
+    for (const std::string& l : energy_lines(cases, line, w)) f.stream() << l;
+    f.commit();
+  };
   fs::create_directories(dir / "energies");
   for (const Model model : graded_energies) {
-    io::AtomicFile f((dir / "energies" / (std::string(model_name(model)) + ".jsonl")).string());
-    io::AtomicFile p((dir / "energies" / (std::string(model_name(model)) + ".projected.jsonl")).string());
-    for (const EnergyCase& c : energy_set(model).cases) {
-      if (progress) progress(++w.done, w.total);
-      f.stream() << energy_line(c, model);
-      if (progress) progress(++w.done, w.total);
-      p.stream() << projected_line(c, model);
-      ++summary.energy_cases;
-    }
-    f.commit();
-    p.commit();
+    const std::vector<EnergyCase>& cases = energy_set(model).cases;
+    const std::string name(model_name(model));
+    write(dir / "energies" / (name + ".jsonl"), cases, [model](const EnergyCase& c) { return energy_line(c, model); });
+    write(dir / "energies" / (name + ".projected.jsonl"), cases,
+          [model](const EnergyCase& c) { return projected_line(c, model); });
+    summary.energy_cases += cases.size();
   }
-  {
-    io::AtomicFile f((dir / "energies" / "quadratic.jsonl").string());
-    for (const EnergyCase& c : quadratic_set().cases) {
-      if (progress) progress(++w.done, w.total);
-      f.stream() << quadratic_line(c);
-      ++summary.energy_cases;
-    }
-    f.commit();
-  }
+  write(dir / "energies" / "quadratic.jsonl", quadratic_set().cases, quadratic_line);
+  summary.energy_cases += quadratic_set().cases.size();
   // The float32 pairs' conditioning (of the exact values: the same lines' format; no projected references).
   fs::create_directories(dir / "energies-float32");
   for (const Model model : graded_energies) {
-    io::AtomicFile f((dir / "energies-float32" / (std::string(model_name(model)) + ".jsonl")).string());
-    for (const EnergyCase& c : energy_set(model, Depth::quick, Dtype::float32).cases) {
-      if (progress) progress(++w.done, w.total);
-      f.stream() << energy_line(c, model);
-      ++summary.energy_cases;
-    }
-    f.commit();
+    const std::vector<EnergyCase>& cases = energy_set(model, Depth::quick, Dtype::float32).cases;
+    write(dir / "energies-float32" / (std::string(model_name(model)) + ".jsonl"), cases,
+          [model](const EnergyCase& c) { return energy_line(c, model); });
+    summary.energy_cases += cases.size();
   }
-  {
-    io::AtomicFile f((dir / "energies-float32" / "quadratic.jsonl").string());
-    for (const EnergyCase& c : quadratic_set(Depth::quick, Dtype::float32).cases) {
-      if (progress) progress(++w.done, w.total);
-      f.stream() << quadratic_line(c);
-      ++summary.energy_cases;
-    }
-    f.commit();
-  }
+  write(dir / "energies-float32" / "quadratic.jsonl", quadratic_set(Depth::quick, Dtype::float32).cases,
+        quadratic_line);
+  summary.energy_cases += quadratic_set(Depth::quick, Dtype::float32).cases.size();
 
   io::AtomicFile index((dir / "meshes" / "meshes.jsonl").string());
   for (const MeshCase& m : meshes()) {

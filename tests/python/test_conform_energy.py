@@ -1,7 +1,11 @@
 """hinge.conform_energy (docs/energy-conformance.md): bending terms as simulators write them, right and with the
 mistakes their trackers report, each graded and, where wrong, diagnosed."""
 
+import html
 import json
+import re
+import sys
+import types
 
 import numpy as np
 import pytest
@@ -299,3 +303,21 @@ def test_bergous_half_quadratic_form_is_named_as_a_factor_one_half():
     r = hinge.conform_energy(quadratic_term(constant=1.5), energy="quadratic")
     assert not r.passed
     assert "1/2 times the declared one" in sentence(r)
+
+
+def test_the_html_reproducer_calls_the_term_with_its_rest_hinge_and_reproduces(tmp_path, monkeypatch):
+    wrong = tan_term(weight=lambda R: contract_weight(R) / 3)
+    path = tmp_path / "report.html"
+    hinge.conform_energy(wrong).to_html(path)
+    page = path.read_text()
+    code = html.unescape(re.search(r'<pre class="pytest">(.*?)</pre>', page, re.S).group(1))
+    assert "my_term(X.copy(), R.copy())" in code and "R = np.array(" in code and '"energy": np.array(' in code
+    for term, fails in ((wrong, True), (tan_term(), False)):
+        monkeypatch.setitem(sys.modules, "my_module", types.SimpleNamespace(my_term=term))
+        namespace = {}
+        exec(code, namespace)
+        if fails:
+            with pytest.raises(AssertionError):
+                namespace["test_worst_case"]()
+        else:
+            namespace["test_worst_case"]()
