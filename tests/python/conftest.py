@@ -5,6 +5,7 @@ from PYTHONPATH (<build>/python)."""
 import glob
 import json
 import os
+import re
 import subprocess
 
 import numpy as np
@@ -45,3 +46,15 @@ def read_x(path):
 def read_results(text):
     """The command's output lines as (theta, grad, hess, error) per line."""
     return [json.loads(line) for line in text.decode().splitlines()]
+
+
+def doc_blocks(page, kind):
+    """The ```kind fenced blocks of a docs page (path from the repository's root), in order."""
+    with open(f"{ROOT}/{page}") as f:
+        return re.findall(rf"```{kind}\n(.*?)```", f.read(), re.S)
+
+
+def shows(shown, printed):
+    """Whether `printed` is `shown`, each line "..." of `shown` standing for one or more lines."""
+    pattern = "".join(r"(?:.*\n)+" if line == "...\n" else re.escape(line) for line in shown.splitlines(True))
+    return re.fullmatch(pattern, printed) is not None

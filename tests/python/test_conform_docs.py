@@ -17,20 +17,13 @@ import types
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, doc_blocks, shows
 
 PAGE = "docs/python-conformance.md"
 
 
 def blocks(kind):
-    with open(f"{ROOT}/{PAGE}") as f:
-        return re.findall(rf"```{kind}\n(.*?)```", f.read(), re.S)
-
-
-def shows(shown, printed):
-    """Whether `printed` is `shown`, each line "..." of `shown` standing for one or more lines."""
-    pattern = "".join(r"(?:.*\n)+" if line == "...\n" else re.escape(line) for line in shown.splitlines(True))
-    return re.fullmatch(pattern, printed) is not None
+    return doc_blocks(PAGE, kind)
 
 
 @pytest.fixture(scope="module")

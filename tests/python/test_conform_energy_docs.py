@@ -5,25 +5,17 @@ or more lines); its second is the diagnosis the same term gets when declared wit
 
 import contextlib
 import io
-import re
 import runpy
 import subprocess
 import sys
 
-from conftest import ROOT
+from conftest import ROOT, doc_blocks, shows
 
 PAGE = "docs/energy-conformance.md"
 
 
 def blocks(kind):
-    with open(f"{ROOT}/{PAGE}") as f:
-        return re.findall(rf"```{kind}\n(.*?)```", f.read(), re.S)
-
-
-def shows(shown, printed):
-    """Whether `printed` is `shown`, each line "..." of `shown` standing for one or more lines."""
-    pattern = "".join(r"(?:.*\n)+" if line == "...\n" else re.escape(line) for line in shown.splitlines(True))
-    return re.fullmatch(pattern, printed) is not None
+    return doc_blocks(PAGE, kind)
 
 
 def test_the_example_on_the_page_is_examples_python_bending_term_py():
