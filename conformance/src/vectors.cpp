@@ -96,6 +96,18 @@ struct SetWriter {
   }
 };
 
+// The opening of an energies/ line: {"id", "length", "scale", "kappa" (psi, gradient, exact Hessian), without the
+// closing brace.
+std::string conditioning_fields(const std::string& id, const Conditioning& k) {
+  std::string line = "{\"id\": " + io::json_string(id) + ", \"length\": ";
+  io::append_double(line, k.length);
+  line += ", \"scale\": ";
+  io::append_array(line, k.scale.data(), 3);
+  line += ", \"kappa\": ";
+  io::append_array(line, k.kappa.data(), 3);
+  return line;
+}
+
 // One line of energies/<energy>.jsonl (docs/conformance-format.md, "energies/"): the conditioning of a case for
 // k = 1 and the contract's weight, of psi, its gradient and exact Hessian, and of the Gauss-Newton Hessian.
 std::string energy_line(const EnergyCase& c, Model model) {
@@ -110,12 +122,7 @@ std::string energy_line(const EnergyCase& c, Model model) {
       energy_conditioning(c.x, c.rest, parameters, false, exact.values.theta, exact.values.grad, exact.values.hess);
   const Conditioning g = energy_conditioning(c.x, c.rest, parameters, true, gauss_newton.values.theta,
                                              gauss_newton.values.grad, gauss_newton.values.hess);
-  std::string line = "{\"id\": " + io::json_string(c.id) + ", \"length\": ";
-  io::append_double(line, k.length);
-  line += ", \"scale\": ";
-  io::append_array(line, k.scale.data(), 3);
-  line += ", \"kappa\": ";
-  io::append_array(line, k.kappa.data(), 3);
+  std::string line = conditioning_fields(c.id, k);
   line += ", \"scale_gauss_newton\": ";
   io::append_double(line, g.scale[2]);
   line += ", \"kappa_gauss_newton\": ";
@@ -176,12 +183,7 @@ std::string quadratic_line(const EnergyCase& c) {
   problem.quadratic = true;
   const Expected e = energy_expected(c, problem, false);
   const Conditioning k = quadratic_conditioning(c.x, c.rest, 1.0, e.values.theta, e.values.grad, e.values.hess);
-  std::string line = "{\"id\": " + io::json_string(c.id) + ", \"length\": ";
-  io::append_double(line, k.length);
-  line += ", \"scale\": ";
-  io::append_array(line, k.scale.data(), 3);
-  line += ", \"kappa\": ";
-  io::append_array(line, k.kappa.data(), 3);
+  std::string line = conditioning_fields(c.id, k);
   return line + "}\n";
 }
 
