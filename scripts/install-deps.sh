@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages hinge builds and tests with. Idempotent: packages already present are
 # left alone, and the script says which it installs. Works as root or through sudo.
+# With --tests (scripts/test.sh) it also installs what only the tests need: chromium, the headless browser
+# that opens a `hinge view` page (about 290 MB with its dependencies; the demo does not need it).
 set -euo pipefail
 
 packages=(
@@ -24,7 +26,12 @@ packages=(
   python3-numpy python3-scipy   # its arrays and sparse matrices
   python3-pytest                # its tests (tests/python)
   python3-dask python3-distributed  # python3 -m hinge.distributed (docs/scale-out.md)
+  libopenblas0-serial           # CHOLMOD's supernodal factorization: BLAS on one thread (sim/)
+  libjs-three                   # three.js, put inside the pages of hinge view
 )
+if [ "${1:-}" = "--tests" ]; then
+  packages+=(chromium)          # the browser test of hinge view's page (tests/view)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -8,7 +8,7 @@
 # tests: HINGE_TEST_DEPTH (quick by default; see docs/testing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./scripts/install-deps.sh
+./scripts/install-deps.sh --tests
 
 echo "== release build and tests"
 cmake --preset release
