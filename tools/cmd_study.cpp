@@ -1,5 +1,6 @@
 // hinge study [--quick] [--out DIR] [--input HINGES.jsonl] [--sample N] [--methods LIST] [--scalars LIST]
-//             [--budget S] [--no-mesh] [--no-plots]   (docs/contract.md; docs/study.md)
+//             [--plugin LIB.so [--symbol NAME] [--name LABEL]]... [--budget S] [--no-mesh] [--no-plots]
+//             (docs/contract.md; docs/study.md)
 // Runs hinge::study, writes DIR/study.json and DIR/study.md (whole or not at all), renders the plots with
 // the committed script plot_study.py when Python and matplotlib are there, prints the summary.
 #include <unistd.h>
@@ -11,6 +12,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "hinge/conformance/plugin.hpp"
 #include "hinge/core/errors.hpp"
 #include "hinge/io/atomic_file.hpp"
 #include "hinge/io/study_json.hpp"
@@ -107,6 +109,7 @@ Action add_study(CLI::App& app) {
   struct Options {
     bool quick = false, no_mesh = false, no_plots = false;
     std::string out = "study", input, methods, scalars;
+    std::vector<std::string> plugins, symbols, names;
     std::size_t sample = 0;
     double budget = 0;
   };
@@ -117,7 +120,13 @@ Action add_study(CLI::App& app) {
   cmd->add_option("--input", o->input,
                   "Study these hinges (hinge eval's input format; a line's \"category\" groups it)");
   cmd->add_option("--sample", o->sample, "Study N of the input hinges, drawn reproducibly")->check(CLI::PositiveNumber);
-  cmd->add_option("--methods", o->methods, "Comma-separated methods (default: reference,fast,autodiff,symbolic)");
+  cmd->add_option("--methods", o->methods,
+                  "Comma-separated methods (default: reference,fast,autodiff,symbolic,faithful,oracle)");
+  cmd->add_option("--plugin", o->plugins,
+                  "An outside implementation (hinge/candidate.h) as a row, timed in its own process; repeatable");
+  cmd->add_option("--symbol", o->symbols,
+                  "The i-th --plugin's function (default hinge_candidate); repeatable, in the plugins' order");
+  cmd->add_option("--name", o->names, "The i-th --plugin's row label (default its file name); repeatable");
   cmd->add_option(
       "--scalars", o->scalars,
       "Comma-separated scalar types (default: float,double,long-double,dd,qd,float128,bin128,mpfr:128,mpfr:256)");
@@ -132,7 +141,19 @@ Action add_study(CLI::App& app) {
     options.mesh = !o->no_mesh;
     options.budget_seconds = o->budget;
     for (const auto& m : split(o->methods))
-      options.methods.push_back(methods::parse_method(m));  // invalid_argument: usage
+      options.methods.push_back(study::check_method(m));  // invalid_argument: usage
+    if (o->symbols.size() > o->plugins.size() || o->names.size() > o->plugins.size())
+      throw std::invalid_argument("--symbol and --name name the --plugin given before them: more than plugins given");
+    for (std::size_t i = 0; i < o->plugins.size(); ++i) {
+      try {
+        options.outside.push_back(study::plugin_candidate(o->plugins[i],
+                                                          i < o->symbols.size() ? o->symbols[i] : "hinge_candidate",
+                                                          i < o->names.size() ? o->names[i] : ""));
+      } catch (const conformance::PluginError& e) {
+        std::cerr << "hinge study: " << e.what() << "\n";
+        return exit_usage;
+      }
+    }
     for (const auto& s : split(o->scalars)) options.scalars.push_back(parse_scalar_type(s));
     if (!o->input.empty()) {
       try {

@@ -67,6 +67,72 @@ bool write_all(int fd, const void* buffer, std::size_t n) {
   return true;
 }
 
+// The requests: one case, or a batch to time.
+constexpr std::int32_t kCase = 0, kTime = 1;
+
+// A batch to time: how the parent describes it (then 12 doubles per hinge).
+struct TimingRequest {
+  std::uint64_t beside;  // Plugin::PerHinge, an address in the parent's image, which the child shares
+  std::uint32_t hinges, rounds, repeats;
+};
+
+// Per hinge of `hinges`, one call of `f` writing into slot i of `out` (theta, then 12 gradient and 144
+// Hessian entries per hinge, in three arrays); ns per hinge, and f's first nonzero return.
+template <class F>
+double timed_pass(F&& f, const std::vector<double>& hinges, std::vector<double>& out, int repeats, int& status) {
+  const std::size_t n = hinges.size() / 12;
+  double* theta = out.data();
+  double* grad = theta + n;
+  double* hess = grad + 12 * n;
+  const auto start = Clock::now();
+  for (int r = 0; r < repeats; ++r)
+    for (std::size_t i = 0; i < n; ++i) {
+      const int s = f(&hinges[12 * i], &theta[i], &grad[12 * i], &hess[144 * i]);
+      if (s != 0 && status == 0) status = s;
+    }
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return 1e9 * seconds / static_cast<double>(n * static_cast<std::size_t>(repeats));
+}
+
+// The child's side of Plugin::time: reads the batch, times it, answers a status and the rounds. false when
+// the parent is gone.
+bool serve_timing(int fd, hinge_candidate_fn* candidate) {
+  TimingRequest t;
+  if (read_all(fd, &t, sizeof t, Clock::time_point::max()) != 1) return false;
+  std::vector<double> hinges(12 * static_cast<std::size_t>(t.hinges));
+  if (read_all(fd, hinges.data(), sizeof(double) * hinges.size(), Clock::time_point::max()) != 1) return false;
+  const auto beside = reinterpret_cast<Plugin::PerHinge>(t.beside);
+  std::vector<double> mine(157 * static_cast<std::size_t>(t.hinges)), theirs(mine.size());
+  std::vector<double> rounds;
+  int status = 0;
+  const auto plugin_pass = [&] { return timed_pass(candidate, hinges, mine, 1, status); };
+  const auto beside_pass = [&] {
+    int unused = 0;
+    return timed_pass(
+        [beside](const double* x, double* theta, double* grad, double* hess) {
+          beside(x, theta, grad, hess);
+          return 0;
+        },
+        hinges, theirs, static_cast<int>(t.repeats), unused);
+  };
+  for (std::uint32_t r = 0; r < t.rounds && status == 0; ++r) {
+    double a = 0, b = 0;
+    if (r % 2) {
+      b = beside_pass();
+      a = plugin_pass();
+    } else {
+      a = plugin_pass();
+      b = beside_pass();
+    }
+    rounds.push_back(a);
+    rounds.push_back(b);
+  }
+  const std::int32_t answer = status;
+  const auto count = static_cast<std::uint32_t>(status == 0 ? rounds.size() : 0);
+  return write_all(fd, &answer, sizeof answer) && write_all(fd, &count, sizeof count) &&
+         write_all(fd, rounds.data(), sizeof(double) * count);
+}
+
 // The child: loads the library, reports (status 0, or 1 and why), then answers requests until the parent
 // closes the socket. Never returns.
 [[noreturn]] void serve(int fd, const std::string& path, const std::string& symbol, PluginKind kind) {
@@ -92,6 +158,12 @@ bool write_all(int fd, const void* buffer, std::size_t n) {
   report(0, "");
   const std::size_t count = input_count(kind);
   for (;;) {
+    std::int32_t request = 0;
+    if (read_all(fd, &request, sizeof request, Clock::time_point::max()) != 1) ::_exit(0);
+    if (request == kTime) {
+      if (!serve_timing(fd, theta_function)) ::_exit(0);
+      continue;
+    }
     double in[24];  // x, then the rest hinge for a bending term
     if (read_all(fd, in, sizeof(double) * count, Clock::time_point::max()) != 1) ::_exit(0);
     Answer answer;
@@ -201,7 +273,7 @@ CandidateResult Plugin::call(const double* in, std::size_t count) {
   Answer answer;
   const auto deadline =
       std::chrono::time_point_cast<Clock::duration>(Clock::now() + std::chrono::duration<double>(timeout_));
-  int got = write_all(socket_, in, sizeof(double) * count) ? 1 : 0;
+  int got = write_all(socket_, &kCase, sizeof kCase) && write_all(socket_, in, sizeof(double) * count) ? 1 : 0;
   if (got == 1) got = read_all(socket_, &answer.status, sizeof answer.status, deadline);
   if (got == 1) got = read_all(socket_, answer.out, sizeof answer.out, deadline);
   if (got != 1) {
@@ -224,6 +296,44 @@ CandidateResult Plugin::call(const double* in, std::size_t count) {
   std::copy(answer.out + 13, answer.out + kOutputs, r.hess.begin());
   io::check_finite(r);
   return r;
+}
+
+Plugin::Timing Plugin::time(const std::vector<std::array<double, 12>>& hinges, int rounds, PerHinge beside, int repeats,
+                            double timeout_seconds) {
+  if (kind_ != PluginKind::theta) throw std::logic_error("Plugin: only a bend angle is timed");
+  Timing result;
+  if (child_ < 0) start();  // after a crash or a time-out
+  const TimingRequest request{reinterpret_cast<std::uint64_t>(beside), static_cast<std::uint32_t>(hinges.size()),
+                              static_cast<std::uint32_t>(std::max(rounds, 0)),
+                              static_cast<std::uint32_t>(std::max(repeats, 1))};
+  const auto deadline =
+      std::chrono::time_point_cast<Clock::duration>(Clock::now() + std::chrono::duration<double>(timeout_seconds));
+  std::int32_t status = 0;
+  std::uint32_t count = 0;
+  int got = write_all(socket_, &kTime, sizeof kTime) && write_all(socket_, &request, sizeof request) &&
+                    write_all(socket_, hinges.data(), sizeof(double) * 12 * hinges.size())
+                ? 1
+                : 0;
+  if (got == 1) got = read_all(socket_, &status, sizeof status, deadline);
+  if (got == 1) got = read_all(socket_, &count, sizeof count, deadline);
+  std::vector<double> values(count);
+  if (got == 1 && count > 0) got = read_all(socket_, values.data(), sizeof(double) * count, deadline);
+  if (got != 1) {
+    if (got < 0) {
+      result.error = "timed out after " + seconds(timeout_seconds) + " s";
+    } else {
+      result.error = ended(child_);
+      child_ = -1;  // reaped
+    }
+    stop();
+    return result;
+  }
+  if (status != 0) {
+    result.error = "returned " + std::to_string(status);
+    return result;
+  }
+  for (std::size_t r = 0; r + 1 < values.size(); r += 2) result.rounds.push_back({values[r], values[r + 1]});
+  return result;
 }
 
 bool Plugin::fatal(const CandidateResult& r) {

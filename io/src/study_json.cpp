@@ -24,9 +24,11 @@ json group_errors(const GroupErrors& e) {
 
 double error_bits(double units) { return std::log2(1 + units); }
 
+std::string row_label(const StudyRow& r) { return r.outside ? r.method : r.method + "/" + r.scalar.name(); }
+
 void write_study_json(std::ostream& out, const Study& s) {
   json j;
-  j["version"] = 1;
+  j["version"] = 2;
   j["machine"] = {{"cpu", s.cpu}, {"clock_ghz", s.clock_ghz}};
   j["inputs"] = {{"source", s.source}, {"hinges", s.hinges}, {"skipped", s.skipped}, {"categories", s.categories}};
   j["quick"] = s.quick;
@@ -34,20 +36,29 @@ void write_study_json(std::ostream& out, const Study& s) {
   json build = json::object();
   for (const auto& [k, v] : s.build) build[k] = v;
   j["build"] = build;
+  json timing = json::object();
+  for (const auto& [k, v] : s.timing) timing[k] = v;
+  j["timing"] = timing;
   j["units"] = "normwise error in units of 2^-53 (error_u) or of the type's own unit roundoff (error_own)";
   json rows = json::array();
   for (const StudyRow& r : s.rows) {
     json row;
-    row["method"] = method_name(r.method);
+    row["method"] = r.method;
     row["scalar"] = r.scalar.name();
-    json t = json::object(), c = json::object();
+    row["outside"] = r.outside;
+    json t = json::object(), c = json::object(), x = json::object();
     for (int g = 0; g < 3; ++g)
       if (r.ns_per_hinge[g] > 0) {
         t[groups[g]] = r.ns_per_hinge[g];
         if (s.clock_ghz > 0) c[groups[g]] = r.ns_per_hinge[g] * s.clock_ghz;
+        x[groups[g]] = r.x_fast[g];
       }
     row["ns_per_hinge"] = t;
     row["cycles_per_hinge"] = c;
+    row["x_fast"] = x;
+    row["rounds"] = r.rounds;
+    if (!r.escalation.empty()) row["escalation"] = r.escalation;
+    if (!r.error.empty()) row["error"] = r.error;
     json e = json::object(), own = json::object();
     for (const auto& [category, errors] : r.error_u) e[category] = group_errors(errors);
     for (const auto& [category, errors] : r.error_own) own[category] = group_errors(errors);

@@ -17,7 +17,8 @@ namespace hinge::study::detail {
 
 class Prepared {
  public:
-  // Certifies every hinge with the oracle (skipping, and counting, those it rejects). Throws
+  // Certifies every hinge with the oracle, its fast path switched off (skipping, and counting, those it
+  // rejects). Throws
   // hinge::InputError when none is left.
   Prepared(std::vector<StudyHinge> hinges, std::vector<std::array<double, 12>> timing, const ProgressFn& progress);
 

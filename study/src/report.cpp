@@ -14,13 +14,14 @@ namespace {
 
 constexpr const char* groups[3] = {"theta", "grad", "hess"};
 
-std::string label(const Row& r) { return std::string(methods::method_name(r.method)) + "/" + r.scalar.name(); }
+std::string label(const Row& r) { return io::row_label(r); }
 
-// The fast kernel in double: the row every time is compared with (the first row if it is absent).
-const Row* baseline(const Study& s) {
-  for (const Row& r : s.rows)
-    if (r.method == methods::Method::fast && r.scalar.kind == ScalarType::Kind::kind_double) return &r;
-  return s.rows.empty() ? nullptr : &s.rows.front();
+// The ratio to fast in double, measured side by side (timing.hpp), or "-".
+std::string ratio(const Row& r) {
+  if (r.x_fast[2] <= 0) return "-";
+  char b[64];
+  std::snprintf(b, sizeof b, r.x_fast[2] < 10 ? "%.2f" : r.x_fast[2] < 100 ? "%.1f" : "%.0f", r.x_fast[2]);
+  return b;
 }
 
 std::string fixed(double v, int digits) {
@@ -48,15 +49,16 @@ std::string units(double v) {
 }  // namespace
 
 void write_markdown(std::ostream& out, const Study& s) {
-  const Row* base = baseline(s);
   out << "# hinge study\n\n";
   out << "Machine: " << s.cpu << ", clock " << fixed(s.clock_ghz, 2) << " GHz (measured). Inputs: " << s.source << ", "
       << s.hinges << " hinges certified" << (s.skipped ? " (" + std::to_string(s.skipped) + " skipped)" : "") << " in "
       << s.categories.size() << " categories. " << (s.quick ? "Quick study" : "Full study") << ", "
       << fixed(s.seconds, 0) << " s.\n\n";
   out << "## Time and accuracy per hinge\n\n";
-  out << "Time: ns per hinge (one thread, median over passes), theta / theta and gradient / all three, and the\n"
-         "last as a multiple of fast in double. Error: normwise, in units of 2^-53, each output rounded to double,\n"
+  out << "Time: ns per hinge (one thread, the median of the row's passes), theta / theta and gradient / all\n"
+         "three, and the last as a multiple of fast in double (the median of per-round ratios, the row and fast\n"
+         "timed back to back: study.json's \"timing\"). Outside rows are marked (outside). Error: normwise, in units "
+         "of 2^-53, each output rounded to double,\n"
          "against the certified oracle: the worst of any output (theta, gradient, Hessian) over all categories,\n"
          "and the worst Hessian error; own: the worst Hessian error in units of the type's own unit roundoff. On\n"
          "the frontier: no other row is both faster and more accurate (worst of any output).\n\n";
@@ -66,13 +68,11 @@ void write_markdown(std::ostream& out, const Study& s) {
   for (const Row& r : s.rows) {
     double own = 0;
     for (const auto& [c, e] : r.error_own) own = std::max(own, e[2].max);
-    out << "| " << methods::method_name(r.method) << " | " << r.scalar.name() << " | " << ns(r.ns_per_hinge[0]) << " | "
-        << ns(r.ns_per_hinge[1]) << " | " << ns(r.ns_per_hinge[2]) << " | "
-        << (base && base->ns_per_hinge[2] > 0 && r.ns_per_hinge[2] > 0
-                ? fixed(r.ns_per_hinge[2] / base->ns_per_hinge[2], 1)
-                : "-")
-        << " | " << units(r.worst) << " | " << units(r.worst_hess) << " | " << (r.error_own.empty() ? "-" : units(own))
-        << " | " << r.failed << " | " << r.nonfinite << " | " << (r.on_frontier ? "yes" : "") << " |\n";
+    out << "| " << r.method << (r.outside ? " (outside)" : "") << " | " << r.scalar.name() << " | "
+        << ns(r.ns_per_hinge[0]) << " | " << ns(r.ns_per_hinge[1]) << " | " << ns(r.ns_per_hinge[2]) << " | "
+        << ratio(r) << " | " << units(r.worst) << " | " << units(r.worst_hess) << " | "
+        << (r.error_own.empty() ? "-" : units(own)) << " | " << r.failed << " | " << r.nonfinite << " | "
+        << (r.on_frontier ? "yes" : "") << " |\n";
   }
   for (int g = 2; g >= 0; g -= 2) {
     out << "\n## Worst " << groups[g] << " error per category (units of 2^-53, rounded to double)\n\n| method/scalar |";
@@ -89,6 +89,14 @@ void write_markdown(std::ostream& out, const Study& s) {
       out << "\n";
     }
   }
+  for (const Row& r : s.rows)
+    if (!r.escalation.empty()) {
+      out << "\n## " << label(r) << ": hinges its fast path left to the exact stage and enclosures, per category\n\n";
+      out << "| category | escalated |\n|---|---:|\n";
+      for (const auto& [c, f] : r.escalation) out << "| " << c << " | " << fixed(100 * f, 1) << "% |\n";
+    }
+  for (const Row& r : s.rows)
+    if (!r.error.empty()) out << "\n" << label(r) << ": " << r.error << "\n";
   if (!s.mesh.empty()) {
     out << "\n## Mesh level: ns per interior edge (energy, gradient and Hessian of the tan energy; one thread)\n\n";
     std::vector<double> sizes;
@@ -127,7 +135,6 @@ void write_markdown(std::ostream& out, const Study& s) {
 }
 
 void print_summary(std::ostream& out, const Study& s) {
-  const Row* base = baseline(s);
   char line[256];
   std::snprintf(line, sizeof line, "hinge study: %zu hinges in %zu categories, %zu rows, %.2f GHz, %.0f s%s\n",
                 s.hinges, s.categories.size(), s.rows.size(), s.clock_ghz, s.seconds, s.quick ? " (quick)" : "");
@@ -138,12 +145,10 @@ void print_summary(std::ostream& out, const Study& s) {
   for (const Row& r : s.rows) {
     const auto ws = r.error_u.find("well-shaped");
     const double median = ws == r.error_u.end() ? 0 : ws->second[2].median;
-    const std::string ratio = base && base->ns_per_hinge[2] > 0 && r.ns_per_hinge[2] > 0
-                                  ? fixed(r.ns_per_hinge[2] / base->ns_per_hinge[2], 1)
-                                  : "-";
     std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %12s %14s %14s %8zu  %s\n",
-                  std::string(methods::method_name(r.method)).c_str(), r.scalar.name().c_str(),
-                  ns(r.ns_per_hinge[2]).c_str(), ratio.c_str(), units(r.worst).c_str(), units(r.worst_hess).c_str(),
+                  r.outside ? (r.method + " (outside)").c_str() : r.method.c_str(),
+                  r.outside ? "double" : r.scalar.name().c_str(), ns(r.ns_per_hinge[2]).c_str(), ratio(r).c_str(),
+                  units(r.worst).c_str(), units(r.worst_hess).c_str(),
                   ws == r.error_u.end() ? "-" : units(median).c_str(), r.failed + r.nonfinite,
                   r.on_frontier ? "*" : "");
     out << line;

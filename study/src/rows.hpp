@@ -19,6 +19,7 @@
 #include "hinge/fast/hinge_kernel.hpp"
 #include "hinge/reference/rounded.hpp"
 #include "prepared.hpp"
+#include "timing.hpp"
 
 namespace hinge::study::detail {
 
@@ -50,12 +51,21 @@ Outputs<Scalar> evaluate(methods::Method method, const std::array<double, 12>& x
   throw std::invalid_argument("study: unknown method");
 }
 
-// One call of `method` for output group g (0 theta, 1 theta and gradient, 2 all three), returning theta
-// (for the timing loop to consume). The reference's theta alone is its stencil and bend angle; fast
-// computes the gradient with theta, so its group 0 is its group 1.
+// One call of `method` in Scalar for output group g (0 theta, 1 theta and gradient, 2 all three) into slot
+// i of the caller's arrays, each output rounded to double there. The reference's theta alone is its stencil
+// and bend angle; fast computes the gradient with theta, so its group 0 is its group 1; fast in double
+// writes straight into the arrays (hinge_derivatives_into).
 template <class Scalar>
-Scalar call(methods::Method method, int g, const std::array<double, 12>& x) {
+void call_into(methods::Method method, int g, const std::array<double, 12>& x, Slots& out, std::size_t i) {
   using methods::Method;
+  const auto store = [&](const auto& theta, const auto& grad, const auto& hess) {
+    out.theta[i] = to_double(theta);
+    if (g >= 1)
+      for (int k = 0; k < 12; ++k) out.grad[12 * i + k] = to_double(grad[k]);
+    if (g == 2)
+      for (int r = 0; r < 12; ++r)
+        for (int c = 0; c < 12; ++c) out.hess[144 * i + 12 * r + c] = to_double(hess(r, c));
+  };
   const baselines::Outputs level = g == 0   ? baselines::Outputs::theta
                                    : g == 1 ? baselines::Outputs::gradient
                                             : baselines::Outputs::hessian;
@@ -63,18 +73,34 @@ Scalar call(methods::Method method, int g, const std::array<double, 12>& x) {
     case Method::reference:
       if (g == 0) {
         const reference::PreparedHinge<Scalar> h = reference::prepare_hinge<Scalar>(x);
-        return reference::bend_angle(h.stencil, h.sign).theta;
+        out.theta[i] = to_double(reference::bend_angle(h.stencil, h.sign).theta);
+        return;
+      } else {
+        const auto d = reference::theta_derivatives<Scalar>(x, g == 2);
+        store(d.angle.theta, d.grad, d.hess);
+        return;
       }
-      return reference::theta_derivatives<Scalar>(x, g == 2).angle.theta;
-    case Method::fast: return fast::hinge_derivatives<Scalar>(x, g == 2).theta;
-    case Method::autodiff: return baselines::autodiff_derivatives<Scalar>(x, level).theta;
-    case Method::symbolic: return baselines::symbolic_derivatives<Scalar>(x, level).theta;
+    case Method::fast:
+      if constexpr (std::same_as<Scalar, double>) {
+        fast_into(g, x, out, i);
+      } else {
+        const auto d = fast::hinge_derivatives<Scalar>(x, g == 2);
+        store(d.theta, d.grad, d.hess);
+      }
+      return;
+    case Method::autodiff: {
+      const auto d = baselines::autodiff_derivatives<Scalar>(x, level);
+      store(d.theta, d.grad, d.hess);
+      return;
+    }
+    case Method::symbolic: {
+      const auto d = baselines::symbolic_derivatives<Scalar>(x, level);
+      store(d.theta, d.grad, d.hess);
+      return;
+    }
   }
   throw std::invalid_argument("study: unknown method");
 }
-
-using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // v into `out` (whose precision is the wide reference's, at least twice Scalar's: exact).
 template <class Scalar>
@@ -114,6 +140,11 @@ double own_error(std::size_t n, Computed computed, Wide wide, unsigned bits, dou
 // Median and maximum of each group's errors.
 GroupErrors statistics(std::array<std::vector<double>, 3>& errors);
 
+// The normwise errors of prepared hinge i's outputs `rounded` (theta, gradient, Hessian) against the
+// certified ones into `errors`, the Hessian's also into row.hess_errors (the histogram's data).
+void record_errors(Row& row, const Prepared& p, std::size_t i, const RoundedTheta& rounded,
+                   std::array<std::vector<double>, 3>& errors);
+
 // Whether every output is finite.
 template <class Scalar>
 bool finite(const Outputs<Scalar>& r) {
@@ -124,14 +155,12 @@ bool finite(const Outputs<Scalar>& r) {
   return ok;
 }
 
-// The row of `method` in Scalar (mpfr at scalar.mpfr_bits): errors on the prepared hinges in their
-// interleaved order until 70% of `budget` seconds are spent, then times on the timing hinges.
-template <class Scalar>
-Row measure_row(methods::Method method, const ScalarType& scalar, const Prepared& p, double budget, bool quick) {
-  Row row;
-  row.method = method;
-  row.scalar = scalar;
-  const auto start = Clock::now();
+// The errors of a row whose outputs in Scalar `evaluate(i)` gives for prepared hinge i (throwing
+// InputError or DomainError where it cannot), on the prepared hinges in their interleaved order until
+// `deadline` (at least one hinge): error_u per category, and error_own for types wider than double.
+template <class Scalar, class Evaluate>
+void measure_errors(Row& row, const ScalarType& scalar, const Prepared& p, Clock::time_point deadline,
+                    Evaluate&& evaluate) {
   const auto set_precision = [&] {
     if constexpr (std::same_as<Scalar, mpfr>) set_mpfr_bits(scalar.mpfr_bits);
   };
@@ -144,12 +173,12 @@ Row measure_row(methods::Method method, const ScalarType& scalar, const Prepared
 
   std::map<std::string, std::array<std::vector<double>, 3>> rounded_errors, own_errors;
   for (const std::size_t i : p.order) {
-    if (row.hinges > 0 && seconds_since(start) > 0.7 * budget) break;
+    if (row.hinges > 0 && Clock::now() > deadline) break;
     ++row.hinges;
     const StudyHinge& h = p.hinges[i];
     std::optional<Outputs<Scalar>> r;
     try {
-      r = evaluate<Scalar>(method, h.x);
+      r = evaluate(i);
     } catch (const InputError&) {
       ++row.failed;
       continue;
@@ -165,13 +194,7 @@ Row measure_row(methods::Method method, const ScalarType& scalar, const Prepared
       ++row.nonfinite;
       continue;
     }
-    const oracle::CertifiedTheta& c = p.certified[i];
-    auto& e = rounded_errors[h.category];
-    namespace conf = conformance;
-    e[0].push_back(conf::normwise_error(&rounded.theta, &c.theta, 1, p.scale[i][0]));
-    e[1].push_back(conf::normwise_error(rounded.grad.data(), c.grad.data(), 12, p.scale[i][1]));
-    e[2].push_back(conf::normwise_error(rounded.hess.data(), c.hess.data(), 144, p.scale[i][2]));
-    row.hess_errors.push_back(e[2].back());
+    record_errors(row, p, i, rounded, rounded_errors[h.category]);
     if (wider) {
       const auto& w = p.wide(i, wide_bits);  // sets the precision to wide_bits: conversions below are exact
       if (w) {
@@ -191,51 +214,69 @@ Row measure_row(methods::Method method, const ScalarType& scalar, const Prepared
   }
   for (auto& [category, e] : rounded_errors) row.error_u[category] = statistics(e);
   for (auto& [category, e] : own_errors) row.error_own[category] = statistics(e);
+}
 
-  // Times: passes over the timing hinges, one group a pass, the groups in turn; at least 3 passes of each
-  // (quick) or 5, and 0.02 s (quick) or 0.2 s of each group, within the budget.
-  const std::size_t min_passes = quick ? 3 : 5;
-  const double min_seconds = quick ? 0.02 : 0.2;
+// The timing hinges `call(g, x, slots, i)` evaluates without an exception (a first pass, which also warms
+// up), as many as three rounds can take within `seconds` (at least 16, or all).
+template <class Call>
+std::vector<std::array<double, 12>> timing_hinges(const Prepared& p, double seconds, Call&& call) {
   std::vector<std::array<double, 12>> timed;
-  const auto check_start = Clock::now();
-  for (const auto& x : p.timing) {  // the hinges this method evaluates (a first pass, which also warms up)
+  Slots slots(1);
+  const auto start = Clock::now();
+  for (const auto& x : p.timing) {
     try {
-      (void)call<Scalar>(method, 2, x);
+      call(2, x, slots, 0);
       timed.push_back(x);
     } catch (const std::exception&) {
     }
-    if (seconds_since(check_start) > 0.1 * budget) break;  // slow rows: time fewer hinges
-  }
-  if (!timed.empty()) {  // as many hinges as three passes of each group can take within the budget
-    const double per_hinge = seconds_since(check_start) / static_cast<double>(timed.size());
-    const double left = std::max(0.0, budget - seconds_since(start));
-    const auto fit = static_cast<std::size_t>(left / (9 * per_hinge));
-    timed.resize(std::clamp<std::size_t>(fit, std::min<std::size_t>(16, timed.size()), timed.size()));
+    if (seconds_since(start) > 0.1 * seconds) break;  // slow rows: time fewer hinges
   }
   if (!timed.empty()) {
-    std::array<std::vector<double>, 3> per_hinge;
-    std::array<double, 3> spent{};
-    volatile double sink = 0;
-    for (std::size_t pass = 0;; ++pass) {
-      bool enough = pass >= min_passes;
-      for (int g = 0; g < 3; ++g) enough = enough && spent[g] >= min_seconds;
-      if (enough || (pass >= 1 && seconds_since(start) > budget)) break;
-      for (int g = 0; g < 3; ++g) {
-        const auto t0 = Clock::now();
-        double acc = 0;
-        for (const auto& x : timed) acc += to_double(call<Scalar>(method, g, x));
-        const double s = seconds_since(t0);
-        sink = sink + acc;
-        spent[g] += s;
-        per_hinge[g].push_back(1e9 * s / static_cast<double>(timed.size()));
-      }
-    }
-    for (int g = 0; g < 3; ++g) {
-      auto& v = per_hinge[g];
-      std::sort(v.begin(), v.end());
-      row.ns_per_hinge[g] = v[v.size() / 2];
-    }
+    const double per_hinge = seconds_since(start) / static_cast<double>(timed.size());
+    const auto fit = static_cast<std::size_t>(std::max(0.0, seconds) / (9 * per_hinge));
+    timed.resize(std::clamp<std::size_t>(fit, std::min<std::size_t>(16, timed.size()), timed.size()));
   }
+  return timed;
+}
+
+// The row's rounds against fast in double (timing.hpp) on the hinges it evaluates, `call(g, x, slots, i)`
+// writing into the caller's arrays; `groups` 1 when the three groups are one call. Until `deadline`.
+template <class Call>
+void time_row(Row& row, const Prepared& p, Clock::time_point deadline, bool quick, int groups, Call&& call) {
+  const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
+  const std::vector<std::array<double, 12>> timed = timing_hinges(p, left, call);
+  if (timed.empty()) return;
+  Slots row_slots(timed.size()), fast_slots(timed.size());
+  const auto row_pass = [&](int g, int repeats) {
+    return timed_pass(timed.size(), repeats, [&](std::size_t i) { call(g, timed[i], row_slots, i); });
+  };
+  const auto fast_pass = [&](int g, int repeats) {
+    return timed_pass(timed.size(), repeats, [&](std::size_t i) { fast_into(g, timed[i], fast_slots, i); });
+  };
+  if (row.method == "fast" && row.scalar.kind == ScalarType::Kind::kind_double) {  // the row every ratio is to
+    Rounds rounds = time_rounds(row_pass, row_pass, timed.size(), groups, round_policy(quick), deadline);
+    rounds.summarize(row);
+    row.x_fast = {1, 1, 1};
+    return;
+  }
+  time_rounds(row_pass, fast_pass, timed.size(), groups, round_policy(quick), deadline).summarize(row);
+}
+
+// The row of `method` in Scalar (mpfr at scalar.mpfr_bits): errors until half the budget is spent, then
+// its rounds against fast.
+template <class Scalar>
+Row measure_row(methods::Method method, const ScalarType& scalar, const Prepared& p, double budget, bool quick) {
+  Row row;
+  row.method = std::string(methods::method_name(method));
+  row.scalar = scalar;
+  const auto start = Clock::now();
+  const auto budget_end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(budget));
+  measure_errors<Scalar>(row, scalar, p, start + (budget_end - start) / 2,
+                         [&](std::size_t i) { return evaluate<Scalar>(method, p.hinges[i].x); });
+  if constexpr (std::same_as<Scalar, mpfr>) set_mpfr_bits(scalar.mpfr_bits);
+  time_row(row, p, budget_end, quick, 3, [&](int g, const std::array<double, 12>& x, Slots& out, std::size_t i) {
+    call_into<Scalar>(method, g, x, out, i);
+  });
   row.seconds = seconds_since(start);
   return row;
 }

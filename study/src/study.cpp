@@ -28,6 +28,16 @@ GroupErrors statistics(std::array<std::vector<double>, 3>& errors) {
   return s;
 }
 
+void record_errors(Row& row, const Prepared& p, std::size_t i, const RoundedTheta& rounded,
+                   std::array<std::vector<double>, 3>& e) {
+  const oracle::CertifiedTheta& c = p.certified[i];
+  namespace conf = conformance;
+  e[0].push_back(conf::normwise_error(&rounded.theta, &c.theta, 1, p.scale[i][0]));
+  e[1].push_back(conf::normwise_error(rounded.grad.data(), c.grad.data(), 12, p.scale[i][1]));
+  e[2].push_back(conf::normwise_error(rounded.hess.data(), c.hess.data(), 144, p.scale[i][2]));
+  row.hess_errors.push_back(e[2].back());
+}
+
 std::string cpu_name() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
@@ -46,8 +56,9 @@ Row run_row(methods::Method method, const ScalarType& scalar, const Prepared& p,
                            [&]<class Scalar>() { return measure_row<Scalar>(method, scalar, p, budget, quick); });
 }
 
-// A row is on the frontier when no other row is at least as fast (all three outputs) and at least as
-// accurate (its worst error of any output group in any category), and better in one of the two.
+// A row is on the frontier when no other row is at least as fast (all three outputs, as ratios to fast in
+// double measured side by side) and at least as accurate (its worst error of any output group in any
+// category), and better in one of the two: at equal error the faster row is on it.
 void mark_frontier(std::vector<Row>& rows) {
   for (Row& r : rows) {
     r.worst = r.worst_hess = 0;
@@ -56,20 +67,41 @@ void mark_frontier(std::vector<Row>& rows) {
       for (const ErrorStats& g : e) r.worst = std::max(r.worst, g.max);
     }
   }
-  const auto usable = [](const Row& r) {
-    return r.ns_per_hinge[2] > 0 && !r.error_u.empty() && r.failed + r.nonfinite == 0;
-  };
+  const auto usable = [](const Row& r) { return r.x_fast[2] > 0 && !r.error_u.empty() && r.failed + r.nonfinite == 0; };
   for (Row& r : rows) {
     r.on_frontier = usable(r);
     for (const Row& o : rows)
-      if (&o != &r && usable(o) && o.ns_per_hinge[2] <= r.ns_per_hinge[2] && o.worst <= r.worst &&
-          (o.ns_per_hinge[2] < r.ns_per_hinge[2] || o.worst < r.worst))
+      if (&o != &r && usable(o) && o.x_fast[2] <= r.x_fast[2] && o.worst <= r.worst &&
+          (o.x_fast[2] < r.x_fast[2] || o.worst < r.worst))
         r.on_frontier = false;
   }
 }
 
 }  // namespace
 }  // namespace detail
+
+std::vector<std::string> method_names() {
+  std::vector<std::string> names;
+  for (const auto& m : methods::method_names()) names.emplace_back(m);
+  names.emplace_back("faithful");
+  names.emplace_back("oracle");
+  return names;
+}
+
+std::string check_method(const std::string& name) {
+  const auto names = method_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    std::string message = "unknown method '";
+    message += name;
+    message += "' (the study's methods: ";
+    message += known;
+    message += ")";
+    throw std::invalid_argument(message);
+  }
+  return name;
+}
 
 std::vector<ScalarType> default_scalars(bool quick) {
   std::vector<ScalarType> s;
@@ -82,14 +114,20 @@ std::vector<ScalarType> default_scalars(bool quick) {
 Study run(const Options& o) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  const std::vector<methods::Method> methods_ =
-      o.methods.empty() ? std::vector<methods::Method>{methods::Method::reference, methods::Method::fast,
-                                                       methods::Method::autodiff, methods::Method::symbolic}
-                        : o.methods;
+  std::vector<std::string> names = o.methods.empty() ? method_names() : o.methods;
+  for (const auto& n : names) check_method(n);
   const std::vector<ScalarType> scalars = o.scalars.empty() ? default_scalars(o.quick) : o.scalars;
-  if (methods_.empty() || scalars.empty())
+  if ((names.empty() || scalars.empty()) && o.outside.empty())
     throw std::invalid_argument("hinge study: no method or no scalar type to study");
   const double budget = o.budget_seconds > 0 ? o.budget_seconds : (o.quick ? 1.5 : 20);
+  const bool has_double = std::any_of(scalars.begin(), scalars.end(),
+                                      [](const ScalarType& t) { return t.kind == ScalarType::Kind::kind_double; });
+  std::vector<methods::Method> methods_;  // those of hinge::methods, in every type
+  for (const auto& n : names)
+    if (n != "faithful" && n != "oracle") methods_.push_back(methods::parse_method(n));
+  const auto wanted = [&](const char* n) {
+    return has_double && std::find(names.begin(), names.end(), n) != names.end();
+  };
 
   Study s;
   s.quick = o.quick;
@@ -105,15 +143,36 @@ Study run(const Options& o) {
   s.hinges = p.hinges.size();
   s.skipped = p.skipped;
   s.categories = p.categories;
+  s.timing = detail::timing_description(p.timing.size(), builtin, detail::round_policy(o.quick));
 
   std::size_t done = 0;
-  const std::size_t total = methods_.size() * scalars.size();
-  for (const ScalarType& scalar : scalars)
+  const std::size_t total = methods_.size() * scalars.size() + wanted("faithful") + wanted("oracle") + o.outside.size();
+  const auto progress = [&](const std::string& what) {
+    if (o.progress) o.progress("rows: " + what, done, total);
+  };
+  for (const ScalarType& scalar : scalars) {
     for (const methods::Method m : methods_) {
-      if (o.progress) o.progress("rows: " + std::string(methods::method_name(m)) + " in " + scalar.name(), done, total);
+      progress(std::string(methods::method_name(m)) + " in " + scalar.name());
       s.rows.push_back(detail::run_row(m, scalar, p, budget, o.quick));
       ++done;
     }
+    if (scalar.kind != ScalarType::Kind::kind_double) continue;
+    if (wanted("faithful")) {
+      progress("faithful in double");
+      s.rows.push_back(detail::measure_faithful(p, budget, o.quick));
+      ++done;
+    }
+    if (wanted("oracle")) {
+      progress("oracle in double");
+      s.rows.push_back(detail::measure_oracle(p, budget, o.quick));
+      ++done;
+    }
+  }
+  for (const Outside& outside : o.outside) {
+    progress(outside.label + " (outside)");
+    s.rows.push_back(detail::measure_outside(outside, p, o.quick));
+    ++done;
+  }
   if (o.progress) o.progress("rows", total, total);
   detail::mark_frontier(s.rows);
 

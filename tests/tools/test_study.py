@@ -42,7 +42,7 @@ def test_quick_study_writes_every_output_with_four_methods_and_eight_scalar_type
                      "scaling.svg", "scaling.png"]:
             assert os.path.getsize(os.path.join(d, name)) > 0, name
         s = json.load(open(os.path.join(d, "study.json")))
-        assert s["version"] == 1 and s["inputs"]["source"] == "built-in"
+        assert s["version"] == 2 and s["inputs"]["source"] == "built-in"
         assert len({r["method"] for r in s["rows"]}) >= 4
         assert len({r["scalar"] for r in s["rows"]}) >= 8
         for category in ["well-shaped", "near-flat", "near-folded", "needles", "short-hinge-edges", "offsets", "scales"]:

@@ -6,8 +6,9 @@
 // The library is loaded and called in a child process (docs/contract.md, "Plugins", version 2), so that
 // hinge conform survives it: a case on which the plugin crashes, or runs longer than the time-out, fails
 // with the signal or the time-out named, the child is started again, and the other cases still run. The
-// child talks to the parent over a socket pair: 12 doubles in (24 for a bending term: x, then the rest
-// hinge), a status and 157 doubles out. Whatever the plugin prints goes to standard error.
+// child talks to the parent over a socket pair: a request's kind, then 12 doubles in (24 for a bending term: x,
+// then the rest hinge), a status and 157 doubles out; or a batch to time (time()). Whatever the plugin prints goes to
+// standard error.
 #pragma once
 
 #include <sys/types.h>
@@ -16,6 +17,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "hinge/candidate.h"
 #include "hinge/conformance/grading.hpp"
@@ -54,6 +56,21 @@ class Plugin {
   // The same for a bending term at x with its rest hinge: psi in the result's theta slot, as the energy
   // conformance grades it (energy_report.hpp). An energy plugin only (std::logic_error otherwise).
   CandidateResult operator()(const std::array<double, 12>& x, const std::array<double, 12>& rest);
+
+  // The study's outside rows (docs/study.md, "Times"): the plugin timed in batches inside its own process.
+  // Each of `rounds` rounds is a pass over `hinges`, one call per hinge writing into slot i of arrays the
+  // child holds, and `repeats` passes of `beside` (a function of this program, which the child, its fork,
+  // holds too: the kernel every row is compared with) over the same hinges into arrays of the same layout,
+  // back to back, the two in alternating order. Per round, ns per hinge of the plugin and of `beside`; or
+  // an error, as operator() names it ("returned N", a crash, a time-out after `timeout_seconds`), and no
+  // rounds. A theta plugin only (std::logic_error otherwise).
+  using PerHinge = void (*)(const double* x, double* theta, double* grad, double* hess);
+  struct Timing {
+    std::vector<std::array<double, 2>> rounds;  // {plugin, beside} ns per hinge
+    std::string error;
+  };
+  Timing time(const std::vector<std::array<double, 12>>& hinges, int rounds, PerHinge beside, int repeats,
+              double timeout_seconds);
 
   PluginKind kind() const { return kind_; }
 

@@ -21,9 +21,14 @@ struct ErrorStats {
 using GroupErrors = std::array<ErrorStats, 3>;  // theta, grad, hess
 
 struct StudyRow {
-  Method method = Method::fast;
+  std::string method = "fast";  // a method of hinge::methods, "faithful", "oracle", or an outside row's label
   ScalarType scalar;
+  bool outside = false;                          // an implementation from outside (a plugin, a Python callable)
   std::array<double, 3> ns_per_hinge{};          // theta; theta and gradient; all three (0: not timed)
+  std::array<double, 3> x_fast{};                // the median of the per-round ratios to fast in double, per group
+  std::size_t rounds = 0;                        // timing rounds (study.json's "timing")
+  std::map<std::string, double> escalation;      // oracle: per category, the hinges its fast path left undecided
+  std::string error;                             // why an outside row has no time (a crash, a time-out), or ""
   std::map<std::string, GroupErrors> error_u;    // per category, outputs rounded to double
   std::map<std::string, GroupErrors> error_own;  // per category, types wider than double
   std::vector<double> hess_errors;               // per hinge measured (units of 2^-53), for the histogram
@@ -35,6 +40,9 @@ struct StudyRow {
   double worst = 0;           // the largest error of any output group and category (units of 2^-53)
   double worst_hess = 0;      // the largest Hessian error of any category
 };
+
+// The row's name in tables and plots: "fast/double"; an outside row's label alone.
+std::string row_label(const StudyRow& r);
 
 struct StudyMeshRow {
   Method method = Method::fast;
@@ -62,8 +70,9 @@ struct Study {
   std::vector<std::string> categories;
   std::vector<StudyRow> rows;
   std::vector<StudyMeshRow> mesh;
-  SharedFit shared_fit;                                    // of the mesh rows in double
-  std::vector<std::pair<std::string, std::string>> build;  // version, commit, compiler, flags, libraries
+  SharedFit shared_fit;                                     // of the mesh rows in double
+  std::vector<std::pair<std::string, std::string>> timing;  // how every row was timed (study.json's "timing")
+  std::vector<std::pair<std::string, std::string>> build;   // version, commit, compiler, flags, libraries
   bool quick = false;
   double seconds = 0;
 };
@@ -71,7 +80,7 @@ struct Study {
 // Bits of error: log2(1 + units), FPBench's measure (0 for an exact result, 53 for one with no correct bit).
 double error_bits(double units);
 
-// study.json, version 1.
+// study.json, version 2 (version 1 and "timing"; rows "faithful", "oracle" and outside rows).
 void write_study_json(std::ostream& out, const Study& s);
 
 }  // namespace hinge::io

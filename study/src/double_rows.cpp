@@ -1,0 +1,123 @@
+// The rows in double alone: the faithful mode, the certified oracle, and implementations from outside
+// (study_internal.hpp). Measured and timed as every row (rows.hpp, timing.hpp).
+#include <algorithm>
+
+#include "hinge/fast/faithful.hpp"
+#include "rows.hpp"
+#include "study_internal.hpp"
+
+namespace hinge::study::detail {
+namespace {
+
+const ScalarType& double_type() {
+  static const ScalarType d = parse_scalar_type("double");
+  return d;
+}
+
+Outputs<double> outputs(const oracle::CertifiedTheta& c) {
+  Outputs<double> o;
+  o.theta = c.theta;
+  for (int k = 0; k < 12; ++k) o.grad[k] = c.grad[k];
+  for (int r = 0; r < 12; ++r)
+    for (int k = 0; k < 12; ++k) o.hess(r, k) = c.hess[12 * r + k];
+  return o;
+}
+
+Clock::time_point after(Clock::time_point t, double seconds) {
+  return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+}  // namespace
+
+Row measure_faithful(const Prepared& p, double budget, bool quick) {
+  Row row;
+  row.method = "faithful";
+  row.scalar = double_type();
+  const auto start = Clock::now();
+  measure_errors<double>(row, row.scalar, p, after(start, budget / 2), [&](std::size_t i) {
+    const fast::HingeDerivatives<double> d = fast::faithful_hinge_derivatives(p.hinges[i].x);
+    return Outputs<double>{d.theta, d.grad, d.hess};
+  });
+  time_row(row, p, after(start, budget), quick, 3,
+           [](int g, const std::array<double, 12>& x, Slots& out, std::size_t i) {
+             const fast::HingeDerivatives<double> d = fast::faithful_hinge_derivatives(x, g == 2);
+             out.theta[i] = d.theta;
+             if (g >= 1)
+               std::copy(d.grad.begin(), d.grad.end(), out.grad.begin() + static_cast<std::ptrdiff_t>(12 * i));
+             if (g == 2)
+               std::copy(d.hess.data(), d.hess.data() + 144, out.hess.begin() + static_cast<std::ptrdiff_t>(144 * i));
+           });
+  row.seconds = seconds_since(start);
+  return row;
+}
+
+Row measure_oracle(const Prepared& p, double budget, bool quick) {
+  Row row;
+  row.method = "oracle";
+  row.scalar = double_type();
+  const auto start = Clock::now();
+  std::map<std::string, std::pair<std::size_t, std::size_t>> escalated;  // per category: beyond the fast path, all
+  measure_errors<double>(row, row.scalar, p, after(start, budget / 2), [&](std::size_t i) {
+    const oracle::CertifiedTheta c = oracle::certified_theta_derivatives(p.hinges[i].x);  // the fast path on
+    auto& [beyond, all] = escalated[p.hinges[i].category];
+    ++all;
+    if (c.path != oracle::Path::fast) ++beyond;
+    return outputs(c);
+  });
+  for (const auto& [category, counts] : escalated)
+    row.escalation[category] = static_cast<double>(counts.first) / static_cast<double>(counts.second);
+  // Its one call gives all three groups.
+  time_row(row, p, after(start, budget), quick, 1, [](int, const std::array<double, 12>& x, Slots& out, std::size_t i) {
+    const oracle::CertifiedTheta c = oracle::certified_theta_derivatives(x);
+    out.theta[i] = c.theta;
+    std::copy(c.grad.begin(), c.grad.end(), out.grad.begin() + static_cast<std::ptrdiff_t>(12 * i));
+    std::copy(c.hess.begin(), c.hess.end(), out.hess.begin() + static_cast<std::ptrdiff_t>(144 * i));
+  });
+  row.seconds = seconds_since(start);
+  return row;
+}
+
+Row measure_outside(const Outside& o, const Prepared& p, bool quick) {
+  Row row;
+  row.method = o.label;
+  row.scalar = double_type();
+  row.outside = true;
+  const auto start = Clock::now();
+  std::vector<std::array<double, 12>> xs;
+  for (const std::size_t i : p.order) xs.push_back(p.hinges[i].x);
+  const std::vector<io::EvalOutput> results = o.evaluate(xs);
+  std::map<std::string, std::array<std::vector<double>, 3>> errors;
+  for (std::size_t k = 0; k < p.order.size() && k < results.size(); ++k) {
+    const std::size_t i = p.order[k];
+    const io::EvalOutput& r = results[k];
+    ++row.hinges;
+    using Status = io::EvalOutput::Status;
+    if (r.status == Status::error || r.status == Status::missing) {
+      ++row.failed;
+      if (row.error.empty() && (r.error.rfind("crashed", 0) == 0 || r.error.rfind("timed out", 0) == 0))
+        row.error = r.error + " on hinge " + p.hinges[i].id;
+      continue;
+    }
+    if (r.status == Status::nonfinite) {
+      ++row.nonfinite;
+      continue;
+    }
+    record_errors(row, p, i, RoundedTheta{r.theta, r.grad, r.hess}, errors[p.hinges[i].category]);
+  }
+  for (auto& [category, e] : errors) row.error_u[category] = statistics(e);
+
+  const RoundPolicy policy = round_policy(quick);
+  const OutsideTiming t = o.time(p.timing, std::max(policy.min_rounds, 3 * policy.min_rounds));
+  if (!t.error.empty()) {
+    row.error = "timing: " + t.error;
+  } else {
+    Rounds rounds;
+    for (const auto& [mine, fast] : t.rounds) rounds.add(2, mine, fast);
+    for (int g = 0; g < 2; ++g) rounds.ns[g] = rounds.ns[2], rounds.ratio[g] = rounds.ratio[2];
+    rounds.summarize(row);
+  }
+  row.seconds = seconds_since(start);
+  return row;
+}
+
+}  // namespace hinge::study::detail
