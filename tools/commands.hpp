@@ -23,6 +23,7 @@ Action add_demo(CLI::App& app);      // hinge demo: the main job on built-in def
 Action add_conform(CLI::App& app);   // hinge conform: check another implementation
 Action add_study(CLI::App& app);     // hinge study: what accuracy costs in time
 Action add_simulate(CLI::App& app);  // hinge simulate: run a scene
+Action add_view(CLI::App& app);      // hinge view: a simulation's page
 
 constexpr int exit_done = 0, exit_invalid_input = 1, exit_usage = 2;
 

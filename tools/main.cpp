@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<std::pair<CLI::App*, Action>> commands = [&] {
     std::vector<std::pair<CLI::App*, Action>> c;
-    for (auto add : {add_eval, add_oracle, add_hessian, add_conform, add_study, add_simulate, add_demo}) {
+    for (auto add : {add_eval, add_oracle, add_hessian, add_conform, add_study, add_simulate, add_view, add_demo}) {
       Action action = add(app);
       c.emplace_back(app.get_subcommands({}).back(), std::move(action));
     }
