@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """hinge view in a real browser: headless chromium (no GPU: SwiftShader's WebGL, and the 2D fallback) opens
 the page of a short cloth-sphere run at 15 x 15 and draws a coloured mesh, another frame (#frame=N) draws
-another picture, the 2D canvas draws it too, nothing is fetched and nothing in the page points elsewhere.
+another picture, the 2D canvas draws it too, and nothing is fetched (the console logs no refused or failed
+load; that nothing in the page points elsewhere is test_command.py's).
 
     test_browser.py HINGE SCENE.json [--keep DIR]
 
@@ -23,7 +24,6 @@ BAR, PANEL = 90, 44  # page.css: the colour bar's column on the right, the contr
 CHROMIUM = ["chromium", "--headless=new", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
             "--enable-unsafe-swiftshader", "--enable-logging=stderr", "--v=0", f"--window-size={WIDTH},{HEIGHT}",
             "--virtual-time-budget=5000"]
-THREE = Path("/usr/share/javascript/three")  # Debian's libjs-three, embedded in the page as it is
 
 
 def chromium(args, page, fragment):
@@ -50,22 +50,6 @@ def coloured_share(view):
     return float(((view.max(axis=2) - view.min(axis=2)) > 0.15).mean())
 
 
-def check_self_contained(html):
-    """Nothing in the page loads from elsewhere: three.js and its controls removed (Debian's files, unchanged;
-    their own namespace strings and licence comments are theirs), the rest names no resource at all."""
-    assert "default-src 'none'" in html, "the page's Content-Security-Policy is missing"
-    rest = html
-    for f in ("three.min.js", "examples/js/controls/OrbitControls.js"):
-        text = (THREE / f).read_text()
-        assert text in rest, f"{f} is not in the page unchanged"
-        rest = rest.replace(text, "")
-    for pattern in (r"https?:", r"\bsrc\s*=", r"\bhref\s*=", r"url\(", r"@import", r"\bfetch\s*\(", r"XMLHttpRequest",
-                    r"\bimport\s*\(", r"WebSocket", r"EventSource", r"sendBeacon", r"\bWorker\s*\(",
-                    r"<(link|iframe|img|object|embed|audio|video|source)\b"):
-        m = re.search(pattern, rest)
-        assert m is None, f"the page points elsewhere: {rest[max(0, m.start() - 60):m.end() + 60]!r}"
-
-
 def main():
     hinge, scene_file = sys.argv[1], Path(sys.argv[2])
     keep = Path(sys.argv[4]) if len(sys.argv) > 4 and sys.argv[3] == "--keep" else None
@@ -81,7 +65,6 @@ def main():
                        check=True, capture_output=True, timeout=60)
         subprocess.run([hinge, "view", str(out)], check=True, capture_output=True, timeout=60)
         page = out / "view.html"
-        check_self_contained(page.read_text())
 
         start = time.monotonic()
         first, body0 = screenshot(page, "#frame=0", work / "frame0.png")
