@@ -103,6 +103,7 @@
   const play = document.getElementById('play');
   const timeLabel = document.getElementById('time');
   const status = document.getElementById('status');
+  document.title = run.name + ' (hinge view)';
   slider.max = String(frameCount - 1);
   status.textContent = run.name + ': ' + run.status + (run.reason ? ' (' + run.reason + ')' : '');
   if (run.status !== 'ok') status.className = 'failed';

@@ -35,18 +35,6 @@ std::vector<std::int32_t> face_hinges(const Topology& t) {
   return h;
 }
 
-std::string html_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  return out;
-}
-
 // JSON inside a <script> element: "</" written as "<\/" (the same string to a JSON reader).
 std::string script_safe(const std::string& json_text) {
   std::string out;
@@ -104,7 +92,6 @@ PageStats write_page(std::ostream& out, const Run& run) {
 
   json data;
   data["name"] = run.name;
-  data["folder"] = run.folder;
   data["status"] = run.status;
   data["reason"] = run.reason;
   data["dynamic"] = run.dynamic;
@@ -130,10 +117,8 @@ PageStats write_page(std::ostream& out, const Run& run) {
   data["sphere"] = run.sphere ? json{{"center", vec(run.sphere->center)}, {"radius", run.sphere->radius}} : json();
   data["up"] = run.gravity ? vec({-(*run.gravity)[0], -(*run.gravity)[1], -(*run.gravity)[2]}) : vec({0, 0, 1});
 
-  const std::string title = html_escaped(run.name + " (hinge view)");
   const std::string data_text = script_safe(data.dump());
-  out << fill(embedded::page_html(), {{"<!--hinge:title-->", title},
-                                      {"/*hinge:style*/", embedded::page_css()},
+  out << fill(embedded::page_html(), {{"/*hinge:style*/", embedded::page_css()},
                                       {"<!--hinge:three-notice-->", embedded::three_notice()},
                                       {"/*hinge:three*/", embedded::three_js()},
                                       {"/*hinge:orbit-controls*/", embedded::orbit_controls_js()},
