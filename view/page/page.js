@@ -90,12 +90,28 @@
     }
     return [1, 0, 0];
   })();
-  function fittedDistance(aspect) {
-    const half = (fov * Math.PI) / 360;
-    const horizontal = Math.atan(Math.tan(half) * aspect);
-    return (1.05 * radius) / Math.sin(Math.min(half, horizontal));
-  }
   const elevation = (35 * Math.PI) / 180;
+  const initialBack = [0, 1, 2].map((c) => Math.cos(elevation) * side[c] + Math.sin(elevation) * up[c]);
+  // The camera's axes when it looks from the direction `back` (unit, from the centre towards the eye), as
+  // three.js's lookAt makes them: right = up x back, vertical = back x right.
+  function cameraAxes(back) {
+    let right = normalized(cross(up, back));
+    if (Math.hypot(...right) < 0.5) right = side;  // looking along up
+    return [right, cross(back, right)];
+  }
+  // The least distance from the centre at which every corner of the box of all frames is in view (with a
+  // margin of 5%), looking from `back`.
+  function fittedDistance(aspect, back) {
+    const [right, vertical] = cameraAxes(back);
+    const ty = 0.95 * Math.tan((fov * Math.PI) / 360), tx = ty * aspect;
+    let d = 0;
+    for (let k = 0; k < 8; ++k) {
+      const p = [0, 1, 2].map((c) => ((k >> c) & 1 ? run.box.max[c] : run.box.min[c]) - centre[c]);
+      const z = dot(p, back);
+      d = Math.max(d, z + Math.abs(dot(p, right)) / tx, z + Math.abs(dot(p, vertical)) / ty);
+    }
+    return d > 0 ? d : radius;
+  }
 
   // --- Controls and state ---------------------------------------------------------------------------------
   const view = document.getElementById('view');
@@ -202,8 +218,8 @@
       camera.updateProjectionMatrix();
       draw();
     }
-    const d = fittedDistance(Math.max(view.clientWidth, 1) / Math.max(view.clientHeight, 1));
-    camera.position.set(...[0, 1, 2].map((c) => centre[c] + d * (Math.cos(elevation) * side[c] + Math.sin(elevation) * up[c])));
+    const d = fittedDistance(Math.max(view.clientWidth, 1) / Math.max(view.clientHeight, 1), initialBack);
+    camera.position.set(...[0, 1, 2].map((c) => centre[c] + d * initialBack[c]));
     controls.update();
     controls.addEventListener('change', draw);
     window.addEventListener('resize', resize);
@@ -237,9 +253,7 @@
     function draw() {
       const w = canvas.width, hgt = canvas.height, e = eye();
       const back = normalized([0, 1, 2].map((c) => e[c] - centre[c]));  // camera's +z
-      let right = normalized(cross(up, back));
-      if (!isFinite(right[0]) || Math.hypot(...right) < 0.5) right = side;
-      const vertical = cross(back, right);
+      const [right, vertical] = cameraAxes(back);
       const focal = hgt / 2 / Math.tan((fov * Math.PI) / 360);
       const project = (p) => {
         const r = [p[0] - e[0], p[1] - e[1], p[2] - e[2]];
@@ -324,7 +338,7 @@
     }, {passive: false});
     window.addEventListener('resize', resize);
     resize();
-    distance = fittedDistance(canvas.width / canvas.height);
+    distance = fittedDistance(canvas.width / canvas.height, initialBack);
     return {
       name: '2d',
       setFrame(frame) {
