@@ -166,6 +166,14 @@ class Folder : public ::testing::Test {
     std::ofstream out(p);
     io::write_obj(out, m);
   }
+  // The scene made a static solve.
+  void make_static() const {
+    std::string scene;
+    std::getline(std::ifstream(dir / "scene.json"), scene, '\0');
+    const std::string dynamic = R"("mode": "dynamic", "dt": 0.01, "steps": 5)";
+    scene.replace(scene.find(dynamic), dynamic.size(), R"("mode": "static")");
+    write(dir / "scene.json", scene);
+  }
   // The message of the InputError that read_run throws here ("" if none).
   std::string refusal() const {
     try {
@@ -211,11 +219,7 @@ TEST_F(Folder, AFailedRunShowsItsFramesAndItsReason) {
 
 TEST_F(Folder, AStaticRunShowsFinalObjAlone) {
   fs::remove_all(dir / "frames");
-  std::string scene;
-  std::getline(std::ifstream(dir / "scene.json"), scene, '\0');
-  const std::string dynamic = R"("mode": "dynamic", "dt": 0.01, "steps": 5)";
-  scene.replace(scene.find(dynamic), dynamic.size(), R"("mode": "static")");
-  write(dir / "scene.json", scene);
+  make_static();
   const view::Run run = read_run(dir.string());
   EXPECT_FALSE(run.dynamic);
   ASSERT_EQ(run.frames.size(), 1u);
@@ -232,7 +236,15 @@ TEST_F(Folder, AFolderWithoutSceneJsonIsRefusedNamingTheFolder) {
 TEST_F(Folder, AMissingFolderAndOneWithNothingToShowAreRefused) {
   fs::remove_all(dir / "frames");
   fs::remove(dir / "final.obj");
-  EXPECT_NE(refusal().find(dir.string() + ": not a simulation's output folder"), std::string::npos) << refusal();
+  EXPECT_NE(refusal().find(dir.string() + ": not a simulation's output folder (no frames/ and no final.obj)"),
+            std::string::npos)
+      << refusal();
+  make_static();
+  write(dir / "summary.json", R"({"scene": "drop", "status": "failed", "reason": "no decrease"})");
+  EXPECT_NE(refusal().find(dir.string() + ": nothing to show: a static run that failed writes no final.obj "
+                                          "(summary.json: no decrease)"),
+            std::string::npos)
+      << refusal();
   fs::remove_all(dir);
   EXPECT_NE(refusal().find(dir.string() + ": not a simulation's output folder"), std::string::npos) << refusal();
 }

@@ -99,9 +99,10 @@ Run read_run(const std::string& folder) {
     Frame last = read_frame(final_obj, run.dynamic ? scene.solve.dt * scene.solve.steps : 0.0, run.rest);
     if (run.frames.empty() || last.vertices != run.frames.back().vertices) run.frames.push_back(std::move(last));
   }
+  if (run.frames.empty() && run.dynamic) not_an_output_folder(folder, "no frames/ and no final.obj");
   if (run.frames.empty())
-    not_an_output_folder(folder,
-                         run.dynamic ? "no frames/ and no final.obj" : "no final.obj: a static run that failed");
+    throw InputError(folder + ": nothing to show: a static run that failed writes no final.obj (summary.json: " +
+                     (run.reason.empty() ? run.status : run.reason) + ")");
   return run;
 }
 

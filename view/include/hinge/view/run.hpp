@@ -35,8 +35,9 @@ struct Run {
 // 00001.obj, ... (frame i at time i * output.every * dt), then final.obj at steps * dt when it differs from
 // the last frame; a static run's final.obj alone. A failed run has no final.obj: its frames are shown.
 // Throws hinge::InputError naming the folder when it is not a simulation's output folder (no summary.json,
-// scene.json or rest.obj; nothing to show; a frame missing from the sequence), naming the file for a file
-// that cannot be read, and naming the frame for a frame whose vertex count or faces differ from rest.obj's.
+// scene.json or rest.obj; a dynamic run without frames; a frame missing from the sequence) or has nothing to
+// show (a static run that failed: no final.obj), naming the file for a file that cannot be read, and naming
+// the frame for a frame whose vertex count or faces differ from rest.obj's.
 Run read_run(const std::string& folder);
 
 }  // namespace hinge::view
