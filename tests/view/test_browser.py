@@ -10,6 +10,7 @@ Label browser (release only); needs Debian's chromium (scripts/install-deps.sh -
 numpy and matplotlib (to read the screenshots)."""
 import json
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -52,6 +53,9 @@ def coloured_share(view):
 
 def main():
     hinge, scene_file = sys.argv[1], Path(sys.argv[2])
+    if shutil.which("chromium") is None:
+        print("chromium not found: Debian's chromium is what this test needs (scripts/install-deps.sh --tests)")
+        return 1
     keep = Path(sys.argv[4]) if len(sys.argv) > 4 and sys.argv[3] == "--keep" else None
     with tempfile.TemporaryDirectory() as tmp:
         work = keep or Path(tmp)
