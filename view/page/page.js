@@ -122,6 +122,7 @@
   document.title = run.name + ' (hinge view)';
   slider.max = String(frameCount - 1);
   status.textContent = run.name + ': ' + run.status + (run.reason ? ' (' + run.reason + ')' : '');
+  status.title = status.textContent;  // in full where it is cut short
   if (run.status !== 'ok') status.className = 'failed';
   let current = -1, playing = false, renderer = null;
 
