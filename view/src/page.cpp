@@ -115,7 +115,8 @@ PageStats write_page(std::ostream& out, const Run& run) {
   data["positions"] = std::move(frames);
   data["values"] = std::move(frame_values);
   data["sphere"] = run.sphere ? json{{"center", vec(run.sphere->center)}, {"radius", run.sphere->radius}} : json();
-  data["up"] = run.gravity ? vec({-(*run.gravity)[0], -(*run.gravity)[1], -(*run.gravity)[2]}) : vec({0, 0, 1});
+  const bool falls = run.gravity && *run.gravity != io::Vec3{0, 0, 0};  // "up" against gravity, else +z
+  data["up"] = falls ? vec({-(*run.gravity)[0], -(*run.gravity)[1], -(*run.gravity)[2]}) : vec({0, 0, 1});
 
   const std::string data_text = script_safe(data.dump());
   out << fill(embedded::page_html(), {{"/*hinge:style*/", embedded::page_css()},
