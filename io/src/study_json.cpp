@@ -33,6 +33,7 @@ void write_study_json(std::ostream& out, const Study& s) {
   j["inputs"] = {{"source", s.source}, {"hinges", s.hinges}, {"skipped", s.skipped}, {"categories", s.categories}};
   j["quick"] = s.quick;
   j["seconds"] = s.seconds;
+  j["timing_seconds"] = s.timing_seconds;
   json build = json::object();
   for (const auto& [k, v] : s.build) build[k] = v;
   j["build"] = build;

@@ -1,6 +1,7 @@
 // The rows in double alone: the faithful mode, the certified oracle, and implementations from outside
 // (study_internal.hpp). Measured and timed as every row (rows.hpp, timing.hpp).
 #include <algorithm>
+#include <memory>
 
 #include "hinge/fast/faithful.hpp"
 #include "rows.hpp"
@@ -29,8 +30,9 @@ Clock::time_point after(Clock::time_point t, double seconds) {
 
 }  // namespace
 
-Row measure_faithful(const Prepared& p, double budget, bool quick) {
-  Row row;
+Measured measure_faithful(const Prepared& p, double budget, bool quick) {
+  Measured m;
+  Row& row = m.row;
   row.method = "faithful";
   row.scalar = double_type();
   const auto start = Clock::now();
@@ -38,21 +40,23 @@ Row measure_faithful(const Prepared& p, double budget, bool quick) {
     const fast::HingeDerivatives<double> d = fast::faithful_hinge_derivatives(p.hinges[i].x);
     return Outputs<double>{d.theta, d.grad, d.hess};
   });
-  time_row(row, p, after(start, budget), quick, 3,
-           [](int g, const std::array<double, 12>& x, Slots& out, std::size_t i) {
-             const fast::HingeDerivatives<double> d = fast::faithful_hinge_derivatives(x, g == 2);
-             out.theta[i] = d.theta;
-             if (g >= 1)
-               std::copy(d.grad.begin(), d.grad.end(), out.grad.begin() + static_cast<std::ptrdiff_t>(12 * i));
-             if (g == 2)
-               std::copy(d.hess.data(), d.hess.data() + 144, out.hess.begin() + static_cast<std::ptrdiff_t>(144 * i));
-           });
+  m.timer = row_timer(
+      row, p, budget / 2, quick, 3,
+      [](int g, const std::array<double, 12>& x, Slots& out, std::size_t i) {
+        const fast::HingeDerivatives<double> d = fast::faithful_hinge_derivatives(x, g == 2);
+        out.theta[i] = d.theta;
+        if (g >= 1) std::copy(d.grad.begin(), d.grad.end(), out.grad.begin() + static_cast<std::ptrdiff_t>(12 * i));
+        if (g == 2)
+          std::copy(d.hess.data(), d.hess.data() + 144, out.hess.begin() + static_cast<std::ptrdiff_t>(144 * i));
+      },
+      [] {});
   row.seconds = seconds_since(start);
-  return row;
+  return m;
 }
 
-Row measure_oracle(const Prepared& p, double budget, bool quick) {
-  Row row;
+Measured measure_oracle(const Prepared& p, double budget, bool quick) {
+  Measured m;
+  Row& row = m.row;
   row.method = "oracle";
   row.scalar = double_type();
   const auto start = Clock::now();
@@ -66,19 +70,22 @@ Row measure_oracle(const Prepared& p, double budget, bool quick) {
   });
   for (const auto& [category, counts] : escalated)
     row.escalation[category] = static_cast<double>(counts.first) / static_cast<double>(counts.second);
-  // Its one call gives all three groups.
-  time_row(row, p, after(start, budget), quick, 1, [](int, const std::array<double, 12>& x, Slots& out, std::size_t i) {
-    const oracle::CertifiedTheta c = oracle::certified_theta_derivatives(x);
-    out.theta[i] = c.theta;
-    std::copy(c.grad.begin(), c.grad.end(), out.grad.begin() + static_cast<std::ptrdiff_t>(12 * i));
-    std::copy(c.hess.begin(), c.hess.end(), out.hess.begin() + static_cast<std::ptrdiff_t>(144 * i));
-  });
+  m.timer = row_timer(
+      row, p, budget / 2, quick, 1,  // its one call gives all three groups
+      [](int, const std::array<double, 12>& x, Slots& out, std::size_t i) {
+        const oracle::CertifiedTheta c = oracle::certified_theta_derivatives(x);
+        out.theta[i] = c.theta;
+        std::copy(c.grad.begin(), c.grad.end(), out.grad.begin() + static_cast<std::ptrdiff_t>(12 * i));
+        std::copy(c.hess.begin(), c.hess.end(), out.hess.begin() + static_cast<std::ptrdiff_t>(144 * i));
+      },
+      [] {});
   row.seconds = seconds_since(start);
-  return row;
+  return m;
 }
 
-Row measure_outside(const Outside& o, const Prepared& p, bool quick) {
-  Row row;
+Measured measure_outside(const Outside& o, const Prepared& p, double budget, bool quick) {
+  Measured m;
+  Row& row = m.row;
   row.method = o.label;
   row.scalar = double_type();
   row.outside = true;
@@ -105,19 +112,43 @@ Row measure_outside(const Outside& o, const Prepared& p, bool quick) {
     record_errors(row, p, i, RoundedTheta{r.theta, r.grad, r.hess}, errors[p.hinges[i].category]);
   }
   for (auto& [category, e] : errors) row.error_u[category] = statistics(e);
-
-  const RoundPolicy policy = round_policy(quick);
-  const OutsideTiming t = o.time(p.timing, std::max(policy.min_rounds, 3 * policy.min_rounds));
-  if (!t.error.empty()) {
-    row.error = "timing: " + t.error;
-  } else {
-    Rounds rounds;
-    for (const auto& [mine, fast] : t.rounds) rounds.add(2, mine, fast);
-    for (int g = 0; g < 2; ++g) rounds.ns[g] = rounds.ns[2], rounds.ratio[g] = rounds.ratio[2];
-    rounds.summarize(row);
-  }
   row.seconds = seconds_since(start);
-  return row;
+
+  // A round: one batch request (the candidate's pass and fast's, in its process); the three groups are one call.
+  struct State {
+    Rounds rounds;
+    std::string error;
+    double spent = 0, row_spent = 0;
+    int count = 0;
+  };
+  auto state = std::make_shared<State>();
+  const RoundPolicy policy = round_policy(quick);
+  const auto hinges = std::make_shared<const std::vector<std::array<double, 12>>>(p.timing);
+  RowTimer t;
+  t.round = [state, hinges, time = o.time](int) {
+    const auto round_start = Clock::now();
+    const OutsideTiming r = time(*hinges, 1);
+    state->spent += seconds_since(round_start);
+    ++state->count;
+    if (!r.error.empty()) state->error = r.error;
+    for (const auto& [mine, fast] : r.rounds) {
+      state->rounds.add(2, mine, fast);
+      state->row_spent += 1e-9 * mine * static_cast<double>(hinges->size());
+    }
+  };
+  t.done = [state, policy, budget] {
+    return !state->error.empty() || (state->count >= policy.min_rounds && state->row_spent >= policy.min_seconds) ||
+           (state->count >= 3 && state->spent >= budget);
+  };
+  t.finish = [state](Row& r) {
+    if (!state->error.empty()) {
+      r.error += (r.error.empty() ? "" : "; ") + std::string("timing: ") + state->error;
+      return;
+    }
+    state->rounds.summarize(r, 1);
+  };
+  m.timer = t;
+  return m;
 }
 
 }  // namespace hinge::study::detail

@@ -139,15 +139,14 @@ void print_summary(std::ostream& out, const Study& s) {
   std::snprintf(line, sizeof line, "hinge study: %zu hinges in %zu categories, %zu rows, %.2f GHz, %.0f s%s\n",
                 s.hinges, s.categories.size(), s.rows.size(), s.clock_ghz, s.seconds, s.quick ? " (quick)" : "");
   out << line;
-  std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %12s %14s %14s %8s  %s\n", "method", "scalar", "hess ns",
-                "x fast", "worst (u)", "worst hess (u)", "median w-s (u)", "failed", "frontier");
+  std::snprintf(line, sizeof line, "%-22s %10s %8s %12s %14s %14s %8s  %s\n", "method/scalar", "hess ns", "x fast",
+                "worst (u)", "worst hess (u)", "median w-s (u)", "failed", "frontier");
   out << line;
   for (const Row& r : s.rows) {
     const auto ws = r.error_u.find("well-shaped");
     const double median = ws == r.error_u.end() ? 0 : ws->second[2].median;
-    std::snprintf(line, sizeof line, "%-9s %-12s %10s %8s %12s %14s %14s %8zu  %s\n",
-                  r.outside ? (r.method + " (outside)").c_str() : r.method.c_str(),
-                  r.outside ? "double" : r.scalar.name().c_str(), ns(r.ns_per_hinge[2]).c_str(), ratio(r).c_str(),
+    std::snprintf(line, sizeof line, "%-22s %10s %8s %12s %14s %14s %8zu  %s\n",
+                  (label(r) + (r.outside ? " (outside)" : "")).c_str(), ns(r.ns_per_hinge[2]).c_str(), ratio(r).c_str(),
                   units(r.worst).c_str(), units(r.worst_hess).c_str(),
                   ws == r.error_u.end() ? "-" : units(median).c_str(), r.failed + r.nonfinite,
                   r.on_frontier ? "*" : "");

@@ -216,8 +216,8 @@ void measure_errors(Row& row, const ScalarType& scalar, const Prepared& p, Clock
   for (auto& [category, e] : own_errors) row.error_own[category] = statistics(e);
 }
 
-// The timing hinges `call(g, x, slots, i)` evaluates without an exception (a first pass, which also warms
-// up), as many as three rounds can take within `seconds` (at least 16, or all).
+// The timing hinges `call(g, x, slots, i)` evaluates without an exception, within a tenth of `seconds`
+// (at least one, if any).
 template <class Call>
 std::vector<std::array<double, 12>> timing_hinges(const Prepared& p, double seconds, Call&& call) {
   std::vector<std::array<double, 12>> timed;
@@ -229,66 +229,68 @@ std::vector<std::array<double, 12>> timing_hinges(const Prepared& p, double seco
       timed.push_back(x);
     } catch (const std::exception&) {
     }
-    if (seconds_since(start) > 0.1 * seconds) break;  // slow rows: time fewer hinges
-  }
-  if (!timed.empty()) {
-    const double per_hinge = seconds_since(start) / static_cast<double>(timed.size());
-    const auto fit = static_cast<std::size_t>(std::max(0.0, seconds) / (9 * per_hinge));
-    timed.resize(std::clamp<std::size_t>(fit, std::min<std::size_t>(16, timed.size()), timed.size()));
+    if (!timed.empty() && seconds_since(start) > 0.1 * seconds) break;  // slow rows: time fewer hinges
   }
   return timed;
 }
 
-// The row's rounds against fast in double (timing.hpp) on the hinges it evaluates, `call(g, x, slots, i)`
-// writing into the caller's arrays; `groups` 1 when the three groups are one call. Until `deadline`.
-template <class Call>
-void time_row(Row& row, const Prepared& p, Clock::time_point deadline, bool quick, int groups, Call&& call) {
-  const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
-  const std::vector<std::array<double, 12>> timed = timing_hinges(p, left, call);
-  if (timed.empty()) return;
-  Slots row_slots(timed.size()), fast_slots(timed.size());
-  const auto row_pass = [&](int g, int repeats) {
-    return timed_pass(timed.size(), repeats, [&](std::size_t i) { call(g, timed[i], row_slots, i); });
+// The row's timer against fast in double (timing.hpp) on the timing hinges it evaluates, `call(g, x, slots,
+// i)` writing into the caller's arrays (`prepare()` before each pass: mpfr's precision, a global setting);
+// `groups` 1 when the three groups are one call. Its rounds spend `budget` seconds at most (after 3); none
+// when it evaluates no timing hinge.
+template <class Call, class Prepare>
+std::optional<RowTimer> row_timer(const Row& row, const Prepared& p, double budget, bool quick, int groups, Call call,
+                                  Prepare prepare) {
+  prepare();
+  auto timed = std::make_shared<const std::vector<std::array<double, 12>>>(timing_hinges(p, budget, call));
+  if (timed->empty()) return std::nullopt;
+  const std::size_t n = timed->size();
+  auto row_slots = std::make_shared<Slots>(n), fast_slots = std::make_shared<Slots>(n);
+  const auto row_pass = [=](int g, std::size_t begin, std::size_t count, int repeats) {
+    prepare();
+    return timed_pass(begin, count, n, repeats, [&](std::size_t i) { call(g, (*timed)[i], *row_slots, i); });
   };
-  const auto fast_pass = [&](int g, int repeats) {
-    return timed_pass(timed.size(), repeats, [&](std::size_t i) { fast_into(g, timed[i], fast_slots, i); });
+  const auto fast_pass = [=](int g, std::size_t begin, std::size_t count, int repeats) {
+    return timed_pass(begin, count, n, repeats, [&](std::size_t i) { fast_into(g, (*timed)[i], *fast_slots, i); });
   };
-  if (row.method == "fast" && row.scalar.kind == ScalarType::Kind::kind_double) {  // the row every ratio is to
-    Rounds rounds = time_rounds(row_pass, row_pass, timed.size(), groups, round_policy(quick), deadline);
-    rounds.summarize(row);
-    row.x_fast = {1, 1, 1};
-    return;
-  }
-  time_rounds(row_pass, fast_pass, timed.size(), groups, round_policy(quick), deadline).summarize(row);
+  const bool same = row.method == "fast" && row.scalar.kind == ScalarType::Kind::kind_double;
+  return round_timer(row_pass, fast_pass, n, groups, round_policy(quick), budget, same);
 }
 
-// The row of `method` in Scalar (mpfr at scalar.mpfr_bits): errors until half the budget is spent, then
-// its rounds against fast.
+// The row of `method` in Scalar (mpfr at scalar.mpfr_bits): errors for half the budget, and its timer for
+// the other half.
 template <class Scalar>
-Row measure_row(methods::Method method, const ScalarType& scalar, const Prepared& p, double budget, bool quick) {
-  Row row;
+Measured measure_row(methods::Method method, const ScalarType& scalar, const Prepared& p, double budget, bool quick) {
+  Measured m;
+  Row& row = m.row;
   row.method = std::string(methods::method_name(method));
   row.scalar = scalar;
   const auto start = Clock::now();
-  const auto budget_end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(budget));
-  measure_errors<Scalar>(row, scalar, p, start + (budget_end - start) / 2,
+  measure_errors<Scalar>(row, scalar, p,
+                         start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(budget / 2)),
                          [&](std::size_t i) { return evaluate<Scalar>(method, p.hinges[i].x); });
-  if constexpr (std::same_as<Scalar, mpfr>) set_mpfr_bits(scalar.mpfr_bits);
-  time_row(row, p, budget_end, quick, 3, [&](int g, const std::array<double, 12>& x, Slots& out, std::size_t i) {
-    call_into<Scalar>(method, g, x, out, i);
-  });
+  const auto bits = scalar.mpfr_bits;
+  m.timer = row_timer(
+      row, p, budget / 2, quick, 3,
+      [method](int g, const std::array<double, 12>& x, Slots& out, std::size_t i) {
+        call_into<Scalar>(method, g, x, out, i);
+      },
+      [bits] {
+        if constexpr (std::same_as<Scalar, mpfr>) set_mpfr_bits(bits);
+        (void)bits;
+      });
   row.seconds = seconds_since(start);
-  return row;
+  return m;
 }
 
 #define HINGE_STUDY_ROW_EXTERN(S) \
-  extern template Row measure_row<S>(methods::Method, const ScalarType&, const Prepared&, double, bool);
+  extern template Measured measure_row<S>(methods::Method, const ScalarType&, const Prepared&, double, bool);
 HINGE_FOR_EACH_SCALAR(HINGE_STUDY_ROW_EXTERN)
 #undef HINGE_STUDY_ROW_EXTERN
 
 }  // namespace hinge::study::detail
 
 // For the generated instantiation units (hinge_scalar_units in study/CMakeLists.txt), one per scalar family.
-#define HINGE_STUDY_ROW_INSTANTIATE(S)                             \
-  template hinge::study::Row hinge::study::detail::measure_row<S>( \
+#define HINGE_STUDY_ROW_INSTANTIATE(S)                                          \
+  template hinge::study::detail::Measured hinge::study::detail::measure_row<S>( \
       hinge::methods::Method, const hinge::ScalarType&, const hinge::study::detail::Prepared&, double, bool);

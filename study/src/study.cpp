@@ -51,7 +51,7 @@ std::string cpu_name() {
 
 namespace {
 
-Row run_row(methods::Method method, const ScalarType& scalar, const Prepared& p, double budget, bool quick) {
+Measured run_row(methods::Method method, const ScalarType& scalar, const Prepared& p, double budget, bool quick) {
   return visit_scalar_type(scalar,
                            [&]<class Scalar>() { return measure_row<Scalar>(method, scalar, p, budget, quick); });
 }
@@ -145,35 +145,53 @@ Study run(const Options& o) {
   s.categories = p.categories;
   s.timing = detail::timing_description(p.timing.size(), builtin, detail::round_policy(o.quick));
 
+  // Errors row by row, then every row's timing rounds in turn (timing.hpp).
   std::size_t done = 0;
   const std::size_t total = methods_.size() * scalars.size() + wanted("faithful") + wanted("oracle") + o.outside.size();
   const auto progress = [&](const std::string& what) {
     if (o.progress) o.progress("rows: " + what, done, total);
   };
+  std::vector<std::optional<detail::RowTimer>> timers;
+  const auto add = [&](detail::Measured m) {
+    s.rows.push_back(std::move(m.row));
+    timers.push_back(std::move(m.timer));
+    ++done;
+  };
   for (const ScalarType& scalar : scalars) {
     for (const methods::Method m : methods_) {
       progress(std::string(methods::method_name(m)) + " in " + scalar.name());
-      s.rows.push_back(detail::run_row(m, scalar, p, budget, o.quick));
-      ++done;
+      add(detail::run_row(m, scalar, p, budget, o.quick));
     }
     if (scalar.kind != ScalarType::Kind::kind_double) continue;
     if (wanted("faithful")) {
       progress("faithful in double");
-      s.rows.push_back(detail::measure_faithful(p, budget, o.quick));
-      ++done;
+      add(detail::measure_faithful(p, budget, o.quick));
     }
     if (wanted("oracle")) {
       progress("oracle in double");
-      s.rows.push_back(detail::measure_oracle(p, budget, o.quick));
-      ++done;
+      add(detail::measure_oracle(p, budget, o.quick));
     }
   }
   for (const Outside& outside : o.outside) {
     progress(outside.label + " (outside)");
-    s.rows.push_back(detail::measure_outside(outside, p, o.quick));
-    ++done;
+    add(detail::measure_outside(outside, p, budget, o.quick));
   }
   if (o.progress) o.progress("rows", total, total);
+  const auto timing_start = Clock::now();
+  for (int round = 0;; ++round) {
+    std::size_t left = 0;
+    for (auto& t : timers)
+      if (t && !t->done()) {
+        t->round(round);
+        ++left;
+      }
+    if (o.progress && round % 25 == 0)
+      o.progress("timing: round " + std::to_string(round + 1) + ", rows done", total - left, total);
+    if (left == 0) break;
+  }
+  for (std::size_t i = 0; i < timers.size(); ++i)
+    if (timers[i]) timers[i]->finish(s.rows[i]);
+  s.timing_seconds = std::chrono::duration<double>(Clock::now() - timing_start).count();
   detail::mark_frontier(s.rows);
 
   if (o.mesh) {

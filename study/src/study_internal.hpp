@@ -10,13 +10,14 @@
 namespace hinge::study::detail {
 
 class Prepared;
+struct Measured;  // timing.hpp
 
 // The rows in double alone (double_rows.cpp): the faithful mode, the certified oracle (fast path on, its
 // escalation per category), an outside implementation (its errors on every prepared hinge, its rounds in
 // its own process).
-Row measure_faithful(const Prepared& p, double budget, bool quick);
-Row measure_oracle(const Prepared& p, double budget, bool quick);
-Row measure_outside(const Outside& o, const Prepared& p, bool quick);
+Measured measure_faithful(const Prepared& p, double budget, bool quick);
+Measured measure_oracle(const Prepared& p, double budget, bool quick);
+Measured measure_outside(const Outside& o, const Prepared& p, double budget, bool quick);
 
 // Whole-mesh evaluations of `method` in `scalar` on the cloth of each size n (n x n vertices), in
 // increasing order while the budget lasts (at least one size), and the fitted power law.

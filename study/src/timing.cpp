@@ -39,14 +39,15 @@ void fast_per_hinge(const double* x, double* theta, double* grad, double* hess) 
 
 RoundPolicy round_policy(bool quick) {
   RoundPolicy p;
-  if (!quick) p.min_rounds = 31, p.min_seconds = 1.0, p.pass_seconds = 1e-3;
+  if (!quick) p.min_rounds = 101, p.min_seconds = 1.0, p.pass_seconds = 1e-3;
   return p;
 }
 
-void Rounds::summarize(io::StudyRow& row) const {
+void Rounds::summarize(io::StudyRow& row, int groups) const {
   for (int g = 0; g < 3; ++g) {
-    row.ns_per_hinge[g] = median(ns[g]);
-    row.x_fast[g] = median(ratio[g]);
+    const int from = groups == 1 ? 2 : g;
+    row.ns_per_hinge[g] = median(ns[from]);
+    row.x_fast[g] = median(ratio[from]);
   }
   row.rounds = ns[2].size();
 }
@@ -55,6 +56,11 @@ int repeats_for(double seconds, double ns_per_hinge, std::size_t count) {
   const double pass = ns_per_hinge * 1e-9 * static_cast<double>(count);
   if (!(pass > 0)) return 1;
   return static_cast<int>(std::clamp(std::round(seconds / pass), 1.0, 1e6));
+}
+
+std::size_t chunk_for(double seconds, double ns_per_hinge, std::size_t n) {
+  if (!(ns_per_hinge > 0)) return n;
+  return static_cast<std::size_t>(std::clamp(std::round(seconds / (ns_per_hinge * 1e-9)), 1.0, double(n)));
 }
 
 std::vector<std::pair<std::string, std::string>> timing_description(std::size_t hinges, bool builtin,
@@ -75,8 +81,8 @@ std::vector<std::pair<std::string, std::string>> timing_description(std::size_t 
       {"rounds", "at least " + std::to_string(policy.min_rounds) + " rounds and " +
                      std::to_string(policy.min_seconds).substr(0, 4) +
                      " s of the row's passes; per round and output group the row's pass and fast's pass in double "
-                     "over the same hinges back to back in one process, their order alternating; a pass repeated "
-                     "over its hinges to last about " +
+                     "over the same hinges back to back in one process, their order alternating; each pass (repeated "
+                     "over its hinges when short) lasting about " +
                      std::to_string(static_cast<int>(policy.pass_seconds * 1e6)) + " us"},
       {"ns_per_hinge", "the median of the row's passes"},
       {"x_fast", "the median of the per-round ratios row / fast"},

@@ -9,6 +9,9 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,12 +29,16 @@ struct Slots {
 using Clock = std::chrono::steady_clock;
 inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// ns per hinge of `repeats` passes of `call(i)` over hinges 0 .. count - 1.
+// ns per hinge of `repeats` passes of `call(i mod n)` for i in [begin, begin + count), after one call not
+// timed: the rows take turns, so each pass starts with another row's code and data in the caches and the
+// branch predictors, which a program calling one kernel in a loop does not see (a row of large code, as
+// autodiff's, measured 10-30% slower without it).
 template <class Call>
-double timed_pass(std::size_t count, int repeats, Call&& call) {
+double timed_pass(std::size_t begin, std::size_t count, std::size_t n, int repeats, Call&& call) {
+  call(begin % n);
   const auto start = Clock::now();
   for (int r = 0; r < repeats; ++r)
-    for (std::size_t i = 0; i < count; ++i) call(i);
+    for (std::size_t i = begin; i < begin + count; ++i) call(i % n);
   return 1e9 * seconds_since(start) / static_cast<double>(count * static_cast<std::size_t>(repeats));
 }
 
@@ -43,7 +50,7 @@ void fast_per_hinge(const double* x, double* theta, double* grad, double* hess);
 
 // How long a row's rounds go on.
 struct RoundPolicy {
-  int min_rounds = 11;
+  int min_rounds = 31;
   double min_seconds = 0.15;   // of the row's passes, all groups
   double pass_seconds = 5e-4;  // a pass's target length (short passes repeated over the same hinges)
 };
@@ -56,47 +63,89 @@ struct Rounds {
     ns[g].push_back(row_ns);
     ratio[g].push_back(row_ns / fast_ns);
   }
-  // The medians into the row (ns_per_hinge, x_fast, rounds).
-  void summarize(io::StudyRow& row) const;
+  // The medians into the row (ns_per_hinge, x_fast, rounds); `groups` 1: the three are group 2's.
+  void summarize(io::StudyRow& row, int groups = 3) const;
 };
 
 // Passes of `repeats` needed for a pass of about `seconds` at `ns_per_hinge` over `count` hinges.
 int repeats_for(double seconds, double ns_per_hinge, std::size_t count);
+// The hinges a pass of about `seconds` takes at `ns_per_hinge`: 1 .. n.
+std::size_t chunk_for(double seconds, double ns_per_hinge, std::size_t n);
 
-// Rounds of `row_pass(g, repeats)` against `fast_pass(g, repeats)` (each returning ns per hinge) for the
-// groups `groups` (1: the three groups are one call, timed as group 2), until the policy is met or
-// `deadline` passes (at least 3 rounds).
+// A row's timing, a round at a time: run() gives every row its rounds in turn, so that each row's rounds
+// spread over the whole timing phase and the host's load, which changes from second to second, touches
+// every row alike. round(r) runs round r; done() once the policy is met, or the row's budget spent (after
+// at least 3 rounds); finish(row) writes the medians.
+struct RowTimer {
+  std::function<void(int)> round;
+  std::function<bool()> done;
+  std::function<void(io::StudyRow&)> finish;
+};
+
+// A row and its timer.
+struct Measured {
+  io::StudyRow row;
+  std::optional<RowTimer> timer;
+};
+
+// Rounds of `row_pass(g, begin, count, repeats)` against `fast_pass(g, begin, count, repeats)` (each
+// returning ns per hinge over hinges begin .. begin + count - 1, modulo the n hinges) for the groups (1: the
+// three groups are one call, timed as group 2), back to back, their order alternating from round to round.
+// A pass lasts about policy.pass_seconds: a row slower than that times a chunk of the hinges per round, the
+// next chunk the next round, fast the same chunk beside it; a faster one repeats them all. `budget`: seconds
+// of this row's rounds at most (after 3). `same`: the row is fast in double itself (its ratio is 1).
 template <class RowPass, class FastPass>
-Rounds time_rounds(RowPass&& row_pass, FastPass&& fast_pass, std::size_t count, int groups, const RoundPolicy& policy,
-                   Clock::time_point deadline) {
-  Rounds rounds;
-  std::array<int, 3> row_repeats{1, 1, 1}, fast_repeats{1, 1, 1};
+RowTimer round_timer(RowPass row_pass, FastPass fast_pass, std::size_t n, int groups, const RoundPolicy& policy,
+                     double budget, bool same) {
+  struct State {
+    Rounds rounds;
+    std::array<int, 3> row_repeats{1, 1, 1}, fast_repeats{1, 1, 1};
+    std::array<std::size_t, 3> chunk{};
+    double spent = 0, row_spent = 0;
+    int count = 0;
+    bool ready = false;
+  };
+  auto state = std::make_shared<State>();
   const int first = groups == 1 ? 2 : 0;
-  for (int g = first; g < 3; ++g) {  // a first pass of each sets the repeats (and warms up)
-    row_repeats[g] = repeats_for(policy.pass_seconds, row_pass(g, 1), count);
-    fast_repeats[g] = repeats_for(policy.pass_seconds, fast_pass(g, 1), count);
-  }
-  double spent = 0;
-  for (int r = 0;; ++r) {
-    if (r >= policy.min_rounds && spent >= policy.min_seconds) break;
-    if (r >= 3 && Clock::now() > deadline) break;
+  RowTimer t;
+  t.round = [=](int r) {
+    State& st = *state;
     const auto start = Clock::now();
-    for (int g = first; g < 3; ++g) {
-      double row_ns = 0, fast_ns = 0;
-      if (r % 2) {
-        fast_ns = fast_pass(g, fast_repeats[g]);
-        row_ns = row_pass(g, row_repeats[g]);
-      } else {
-        row_ns = row_pass(g, row_repeats[g]);
-        fast_ns = fast_pass(g, fast_repeats[g]);
+    if (!st.ready) {  // a first pass of each sets the chunk and the repeats (and warms up)
+      for (int g = first; g < 3; ++g) {
+        const double row_ns = row_pass(g, 0, std::min<std::size_t>(n, 4), 1);
+        st.chunk[g] = chunk_for(policy.pass_seconds, row_ns, n);
+        st.row_repeats[g] = repeats_for(policy.pass_seconds, row_ns, st.chunk[g]);
+        if (!same) st.fast_repeats[g] = repeats_for(policy.pass_seconds, fast_pass(g, 0, st.chunk[g], 1), st.chunk[g]);
       }
-      rounds.add(g, row_ns, fast_ns);
+      st.ready = true;
     }
-    spent += seconds_since(start) / 2;
-  }
-  if (groups == 1)
-    for (int g = 0; g < 2; ++g) rounds.ns[g] = rounds.ns[2], rounds.ratio[g] = rounds.ratio[2];
-  return rounds;
+    for (int g = first; g < 3; ++g) {
+      const std::size_t begin = (static_cast<std::size_t>(st.count) * st.chunk[g]) % n;
+      double row_ns = 0, fast_ns = 0;
+      const auto pass_start = Clock::now();
+      if (same) {
+        row_ns = fast_ns = row_pass(g, begin, st.chunk[g], st.row_repeats[g]);
+      } else if (r % 2) {
+        fast_ns = fast_pass(g, begin, st.chunk[g], st.fast_repeats[g]);
+        row_ns = row_pass(g, begin, st.chunk[g], st.row_repeats[g]);
+      } else {
+        row_ns = row_pass(g, begin, st.chunk[g], st.row_repeats[g]);
+        fast_ns = fast_pass(g, begin, st.chunk[g], st.fast_repeats[g]);
+      }
+      st.row_spent += seconds_since(pass_start) * row_ns / (row_ns + fast_ns);
+      st.rounds.add(g, row_ns, fast_ns);
+    }
+    ++st.count;
+    st.spent += seconds_since(start);
+  };
+  t.done = [=] {
+    const State& st = *state;
+    return (st.count >= policy.min_rounds && st.row_spent >= policy.min_seconds) ||
+           (st.count >= 3 && st.spent >= budget);
+  };
+  t.finish = [=](io::StudyRow& row) { state->rounds.summarize(row, groups); };
+  return t;
 }
 
 // study.json's "timing": how every row was timed.

@@ -75,6 +75,7 @@ struct Study {
   std::vector<std::pair<std::string, std::string>> build;   // version, commit, compiler, flags, libraries
   bool quick = false;
   double seconds = 0;
+  double timing_seconds = 0;  // the timing phase (every row's rounds in turn)
 };
 
 // Bits of error: log2(1 + units), FPBench's measure (0 for an exact result, 53 for one with no correct bit).
