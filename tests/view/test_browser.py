@@ -28,8 +28,9 @@ CHROMIUM = ["chromium", "--headless=new", "--no-sandbox", "--disable-gpu", "--us
 
 
 def chromium(args, page, fragment):
-    r = subprocess.run(CHROMIUM + args + [page.resolve().as_uri() + fragment], capture_output=True, text=True,
-                       timeout=60)
+    with tempfile.TemporaryDirectory() as profile:  # its own profile: no clash with another chromium
+        r = subprocess.run(CHROMIUM + [f"--user-data-dir={profile}"] + args + [page.resolve().as_uri() + fragment],
+                           capture_output=True, text=True, timeout=60)
     assert r.returncode == 0, r.stderr
     # The page's Content-Security-Policy forbids every fetch: an attempt would be logged as refused or failed.
     for line in r.stderr.splitlines():
