@@ -118,7 +118,7 @@ def simulate(hinge, P, F, pins, tip, k, work):
     if k is not None:
         bending["k"] = k
     scene = {"scene": 1, "name": "cantilever-study", "mesh": {"obj": obj}, "material": MATERIAL,
-             "solve": {"mode": "static", "newton_tolerance": 1e-10, "max_newton": 200},
+             "solve": {"mode": "static", "newton_tolerance": 1e-10, "residual_tolerance": 1e-5, "max_newton": 200},
              "effects": {"gravity": {"g": [0, 0, -G]}, "stretching": {"model": "stvk"},
                          "bending": bending, "pins": {"vertices": pins}}}
     path = os.path.join(work, "scene.json")

@@ -170,12 +170,13 @@ Mesh read_mesh_file(Object& o, const std::string& key, const std::filesystem::pa
   }
 }
 
-Mesh read_mesh_object(Object& mesh, const std::filesystem::path& folder, Vec3& velocity) {
+Mesh read_mesh_object(Object& mesh, const std::filesystem::path& folder, Scene& s) {
   Mesh m;
   const bool obj = mesh.has("obj"), grid = mesh.has("grid");
   if (obj == grid) mesh.fail("exactly one of \"obj\" and \"grid\" is required");
   if (obj) {
     m = read_mesh_file(mesh, "obj", folder);
+    s.mesh_obj = (folder / mesh.string("obj")).string();
   } else {
     Object g = mesh.object("grid");
     g.allow({"vertices", "size", "center", "plane"});
@@ -191,9 +192,10 @@ Mesh read_mesh_object(Object& mesh, const std::filesystem::path& folder, Vec3& v
     const Vec3 center = g.vec3("center");
     const std::string plane = g.choice("plane", {"xy", "xz", "yz"});
     g.done();
+    s.grid = Grid{static_cast<int>(nx), static_cast<int>(ny), lx, ly, center, plane};
     m = grid_mesh(static_cast<int>(nx), static_cast<int>(ny), lx, ly, center, plane);
   }
-  if (mesh.has("velocity")) velocity = mesh.vec3("velocity");
+  if (mesh.has("velocity")) s.velocity = mesh.vec3("velocity");
   return m;
 }
 
@@ -202,6 +204,10 @@ Mesh read_mesh_object(Object& mesh, const std::filesystem::path& folder, Vec3& v
 Scene read_scene(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the scene file");
+  return read_scene(in, path, std::filesystem::path(path).parent_path().string());
+}
+
+Scene read_scene(std::istream& in, const std::string& path, const std::string& folder_name) {
   json root;
   try {
     root = json::parse(in);
@@ -210,7 +216,7 @@ Scene read_scene(const std::string& path) {
   }
   Scene s;
   s.file = path;
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  const std::filesystem::path folder(folder_name);
   Object top(s.file, root, "");
   top.allow({"scene", "name", "mesh", "material", "solve", "effects", "output"});
 
@@ -222,7 +228,7 @@ Scene read_scene(const std::string& path) {
   {
     Object mesh = top.object("mesh");
     mesh.allow({"obj", "grid", "rest", "velocity"});
-    s.mesh = read_mesh_object(mesh, folder, s.velocity);
+    s.mesh = read_mesh_object(mesh, folder, s);
     if (const json* r = mesh.optional("rest")) {
       Object rest(s.file, *r, "mesh.rest");
       rest.allow({"obj"});
@@ -250,7 +256,8 @@ Scene read_scene(const std::string& path) {
 
   {
     Object solve = top.object("solve");
-    solve.allow({"mode", "dt", "steps", "newton_tolerance", "max_newton", "hessian", "linear_solver"});
+    solve.allow(
+        {"mode", "dt", "steps", "residual_tolerance", "newton_tolerance", "max_newton", "hessian", "linear_solver"});
     const std::string mode = solve.choice("mode", {"static", "dynamic"});
     s.solve.mode = mode == "static" ? Mode::static_equilibrium : Mode::dynamic;
     if (s.solve.mode == Mode::dynamic) {
@@ -264,6 +271,7 @@ Scene read_scene(const std::string& path) {
       if (root["mesh"].contains("velocity"))
         solve.fail_at("mesh.velocity", "not allowed with \"mode\": \"static\" (an equilibrium has no velocity)");
     }
+    if (solve.has("residual_tolerance")) s.solve.residual_tolerance = solve.positive("residual_tolerance");
     if (solve.has("newton_tolerance")) s.solve.newton_tolerance = solve.positive("newton_tolerance");
     if (const json* v = solve.optional("max_newton")) {
       const long long k = solve.integer("max_newton", *v);
@@ -389,6 +397,54 @@ Scene read_scene(const std::string& path) {
   top.optional("effects"), top.optional("output");
   top.done();
   return s;
+}
+
+std::string resolved_scene_json(const Scene& s, const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  nlohmann::ordered_json j;  // numbers as the shortest decimal that reads back exactly
+  j["scene"] = 1;
+  j["name"] = s.name;
+  auto& mesh = j["mesh"];
+  if (s.grid) {
+    mesh["grid"] = {{"vertices", {s.grid->nx, s.grid->ny}},
+                    {"size", {s.grid->lx, s.grid->ly}},
+                    {"center", s.grid->center},
+                    {"plane", s.grid->plane}};
+  } else {
+    mesh["obj"] = fs::relative(fs::absolute(s.mesh_obj), fs::absolute(out_dir)).generic_string();
+  }
+  mesh["rest"] = {{"obj", "rest.obj"}};
+  if (s.solve.mode == Mode::dynamic) mesh["velocity"] = s.velocity;
+  auto& m = j["material"];
+  m["density"] = s.material.density;
+  if (s.material.young > 0) m["young"] = s.material.young;  // none: no effect needs it
+  m["poisson"] = s.material.poisson;
+  m["thickness"] = s.material.thickness;
+  auto& solve = j["solve"];
+  solve["mode"] = s.solve.mode == Mode::dynamic ? "dynamic" : "static";
+  if (s.solve.mode == Mode::dynamic) solve["dt"] = s.solve.dt, solve["steps"] = s.solve.steps;
+  solve["residual_tolerance"] = s.solve.residual_tolerance;
+  solve["newton_tolerance"] = s.solve.newton_tolerance;
+  solve["max_newton"] = s.solve.max_newton;
+  solve["hessian"] = s.solve.hessian == HessianTreatment::exact       ? "exact"
+                     : s.solve.hessian == HessianTreatment::projected ? "projected"
+                                                                      : "gauss-newton";
+  solve["linear_solver"] = s.solve.linear_solver == LinearSolver::cholmod ? "cholmod" : "ldlt";
+  auto fx = nlohmann::ordered_json::object();
+  if (s.gravity) fx["gravity"] = {{"g", s.gravity->g}};
+  if (s.stretching) fx["stretching"] = {{"model", "stvk"}};
+  if (s.bending)
+    fx["bending"] = {{"energy", std::string(model_name(s.bending->energy))},
+                     {"k", s.bending->k},
+                     {"method", std::string(method_name(s.bending->method))},
+                     {"scalar", s.bending->scalar.name()}};
+  if (s.damping) fx["damping"] = {{"model", "viscous"}, {"mass", s.damping->mass}, {"bending", s.damping->bending}};
+  if (s.pins) fx["pins"] = {{"vertices", s.pins->vertices}};
+  if (s.sphere) fx["sphere"] = {{"center", s.sphere->center}, {"radius", s.sphere->radius}};
+  if (s.load) fx["load"] = {{"vertices", s.load->vertices}, {"force", s.load->force}};
+  j["effects"] = fx;
+  j["output"] = {{"every", s.output_every}};
+  return j.dump(2) + "\n";
 }
 
 }  // namespace hinge::io

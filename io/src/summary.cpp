@@ -22,6 +22,16 @@ std::string summary_json(const Summary& s, const std::vector<std::pair<std::stri
   for (const auto& [name, e] : s.energy) energy[name] = e;
   j["energy"] = energy;
   j["bending_share"] = s.bending_share;
+  const SolverReport& r = s.solver;
+  j["solver"] = {
+      {"factorizations", r.factorizations},
+      {"shifted", r.shifted},
+      {"newton_per_step", {{"median", r.newton_median}, {"max", r.newton_max}}},
+      {"rungs",
+       {{"newton", r.newton}, {"projected", r.projected}, {"shifted", r.shifted_rung}, {"gradient", r.gradient}}},
+      {"halvings", r.halvings},
+      {"limited", r.limited},
+      {"linear_solver", r.linear_solver}};
   json b = json::object();
   for (const auto& [k, v] : build) b[k] = v;
   j["build"] = b;

@@ -51,10 +51,6 @@ class BendingEffect final : public Effect {
                          " (0-based) is folded flat (theta_bar = pi: its two triangles overlap); eq. (10) needs "
                          "|theta_bar| < pi");
       }
-    if (treatment_ != HessianTreatment::exact) {
-      hinge_slots_.reserve(topology_.hinges.size());
-      for (const auto& h : topology_.hinges) hinge_slots_.push_back(sparsity_.element_slots(h.x));
-    }
   }
 
   std::string_view name() const override { return "bending"; }
@@ -80,8 +76,12 @@ class BendingEffect final : public Effect {
 
   void add(const Eigen::VectorXd& x, Evaluation& out) override {
     set_mesh(x);
-    if (treatment_ == HessianTreatment::exact) add_assembled(out);
-    else add_per_hinge(x, out);
+    // The evaluation's treatment (effect.hpp): the true Hessian, every hinge's projected, or the scene's.
+    const HessianTreatment mode = out.treatment == Treatment::exact       ? HessianTreatment::exact
+                                  : out.treatment == Treatment::projected ? HessianTreatment::projected
+                                                                          : treatment_;
+    if (mode == HessianTreatment::exact) add_assembled(out);
+    else add_per_hinge(out, mode == HessianTreatment::gauss_newton);
   }
 
  private:
@@ -144,8 +144,12 @@ class BendingEffect final : public Effect {
   }
 
   // projected and gauss-newton: hinge by hinge.
-  void add_per_hinge(const Eigen::VectorXd&, Evaluation& out) {
-    const bool hessian = out.request & 4u, gauss_newton = treatment_ == HessianTreatment::gauss_newton;
+  void add_per_hinge(Evaluation& out, bool gauss_newton) {
+    const bool hessian = out.request & 4u;
+    if (hessian && hinge_slots_.empty()) {  // the slots of each hinge's 12 x 12, found once
+      hinge_slots_.reserve(topology_.hinges.size());
+      for (const auto& h : topology_.hinges) hinge_slots_.push_back(sparsity_.element_slots(h.x));
+    }
     for (std::size_t i = 0; i < topology_.hinges.size(); ++i) {
       const Psi<double> p = hinge_psi(i, parameters_.model, hessian && !gauss_newton);
       if (out.request & 1u) out.energy += p.value;

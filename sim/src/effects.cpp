@@ -16,6 +16,18 @@ std::vector<std::unique_ptr<Effect>> make_effects(const Context& context) {
   return effects;
 }
 
+Couplings couplings(const Scene& s) {
+  Couplings c;
+  c.vertex_blocks = s.sphere.has_value();
+  c.faces = s.stretching.has_value() || s.bending.has_value();
+  c.hinges = s.bending.has_value();
+  return c;
+}
+
+bool projects(Treatment treatment, HessianTreatment scene) {
+  return treatment == Treatment::projected || (treatment == Treatment::scene && scene != HessianTreatment::exact);
+}
+
 namespace detail {
 
 std::vector<Slot> diagonal_slots(const Sparsity& sparsity) {

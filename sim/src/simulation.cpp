@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "hinge/core/errors.hpp"
@@ -26,7 +27,8 @@ struct Failure {
 class Run {
  public:
   Run(const Scene& scene, const RunOptions& options)
-      : scene_(scene), options_(options), topology_(build_topology(scene.mesh)), sparsity_(topology_) {
+      : scene_(scene), options_(options), topology_(build_topology(scene.mesh)),
+        sparsity_(topology_, couplings(scene)) {
     const std::size_t n = scene.mesh.vertices.size();
     context_.scene = &scene, context_.topology = &topology_, context_.sparsity = &sparsity_;
     context_.threads = options.threads;
@@ -49,6 +51,8 @@ class Run {
     reduction_ = std::make_unique<Reduction>(sparsity_, pinned_);
     solver_ = make_sparse_solver(scene.solve.linear_solver);
     solver_->analyze(reduction_->matrix());
+    summary_.solver.linear_solver = solver_->name();
+    dumping_ = options.on_dump && !options.dump.empty();
     x_.resize(static_cast<Eigen::Index>(3 * n));
     for (std::size_t v = 0; v < n; ++v)
       for (std::size_t c = 0; c < 3; ++c) x_[static_cast<Eigen::Index>(3 * v + c)] = scene.mesh.vertices[v][c];
@@ -92,6 +96,13 @@ class Run {
         times_[i] += seconds_since(t);
         summary_.energy.emplace_back(effects_[i]->name(), e);
       }
+    if (!per_step_.empty()) {
+      std::vector<int> sorted = per_step_;
+      std::sort(sorted.begin(), sorted.end());
+      const std::size_t m = sorted.size();
+      summary_.solver.newton_median = m % 2 ? sorted[m / 2] : 0.5 * (sorted[m / 2 - 1] + sorted[m / 2]);
+      summary_.solver.newton_max = sorted.back();
+    }
     summary_.time_total = seconds_since(start) - output_time_;
     summary_.time_linear_solve = linear_time_;
     for (std::size_t i = 0; i < effects_.size(); ++i) {
@@ -153,8 +164,10 @@ class Run {
   };
 
   // The potential Newton minimizes at x: the effects' parts and, for a time step, the inertial part.
-  Evaluation& evaluate(const Eigen::VectorXd& x, unsigned request, const Inertia* inertia) {
+  Evaluation& evaluate(const Eigen::VectorXd& x, unsigned request, const Inertia* inertia,
+                       Treatment treatment = Treatment::scene) {
     ev_.request = request;
+    ev_.treatment = treatment;
     ev_.energy = 0;
     if (request & 2u) ev_.gradient.setZero(x.size());
     if (request & 4u) ev_.hessian.assign(static_cast<std::size_t>(sparsity_.nonzeros()), 0.0);
@@ -191,37 +204,80 @@ class Run {
     return m;
   }
 
-  // Newton with line search from x_; throws Failure.
+  // The largest force residual on a free vertex: max_v |g_v| of the potential's gradient.
+  double residual(const Eigen::VectorXd& gradient) const {
+    double m = 0;
+    for (Eigen::Index v = 0; v < gradient.size() / 3; ++v)
+      if (reduction_->is_free(3 * v)) m = std::max(m, gradient.segment<3>(3 * v).norm());
+    return m;
+  }
+
+  // The rungs of the fallback chain (summary.json's "rungs").
+  enum class Rung { newton, projected, shifted, gradient };
+
+  // Newton with line search from x_ (docs/simulator.md, "Newton"); throws Failure.
   void newton(const Inertia* inertia) {
-    const double tolerance = scene_.solve.newton_tolerance * longest_edge_;
-    Eigen::VectorXd b, d, dx, trial;
-    for (int iteration = 1; iteration <= scene_.solve.max_newton; ++iteration) {
-      ++summary_.newton_iterations;
+    const double step_tolerance = scene_.solve.newton_tolerance * longest_edge_;
+    force_scale_ = force_scale(inertia != nullptr);
+    const double force_tolerance = scene_.solve.residual_tolerance * force_scale_;
+    const int step = inertia ? summary_.steps + 1 : 0;
+    Eigen::VectorXd b, d, dx, trial, next;
+    bool last_step_small = false;  // the previous iteration's step would have let Newton stop
+    int stalled = 0;               // iterations in a row whose tiny step left the residual where it was
+    double last_residual = INFINITY;
+    shift_ = 0;  // the shift is found afresh in every step
+    int iterations = 0;
+
+    for (int iteration = 1;; ++iteration) {
       Evaluation* evaluated = nullptr;
       try {
-        evaluated = &evaluate(x_, want_all, inertia);
+        evaluated = &evaluate(x_, want_all, inertia, Treatment::scene);
       } catch (const std::exception& e) {  // not expected: every accepted state had a finite potential
         throw Failure{std::string("the potential cannot be evaluated at the current state: ") + e.what()};
       }
       Evaluation& ev = *evaluated;
       if (!std::isfinite(ev.energy) || !ev.gradient.allFinite())
         throw Failure{"the potential or its gradient is not finite at the current state"};
+      const double r = residual(ev.gradient);
+      if (iteration > 1 && last_step_small && r <= force_tolerance) break;  // converged where the step led
+      if (iteration > scene_.solve.max_newton)
+        throw Failure{"Newton did not converge in " + std::to_string(scene_.solve.max_newton) + " iterations" +
+                      (inertia ? " at step " + std::to_string(step) : std::string())};
+      ++summary_.newton_iterations, ++iterations;
       const double energy = ev.energy;
       const Eigen::VectorXd gradient = ev.gradient;
-      const auto t = Clock::now();
-      reduction_->reduce_matrix(ev.hessian);
       reduction_->reduce_vector(gradient, b);
       b = -b;
-      solve_descent(b, d);
+      const Rung rung = descent(ev, inertia, b, d);
       reduction_->expand_vector(d, dx);
-      linear_time_ += seconds_since(t);
+      count(rung);
+      if (wants_dump(step, iteration)) dump(step, iteration, inertia, gradient);
       if (options_.on_progress && !inertia) options_.on_progress(iteration, scene_.solve.max_newton);
       double alpha = 1;
       for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
+      if (alpha < 1) ++summary_.solver.limited;
+      const bool newton_rung = rung == Rung::newton || rung == Rung::projected;
       const double full = largest_displacement(dx);
-      if (full < tolerance) {  // converged: take the (tiny) step without a line search
+      last_step_small = !newton_rung || full <= step_tolerance;
+      // A residual that no longer falls while Newton's steps are below the tolerance is the rounding floor of
+      // the scene's forces: say so rather than iterate to max_newton.
+      stalled =
+          (newton_rung && full <= step_tolerance && r > force_tolerance && r >= 0.5 * last_residual) ? stalled + 1 : 0;
+      last_residual = r;
+      if (stalled >= 3) {
+        char why[320];
+        std::snprintf(why, sizeof why,
+                      "the force residual stalls at %.3g F (residual_tolerance %.3g) while Newton's steps are %.3g L: "
+                      "the rounding floor of this scene's forces; raise solve.residual_tolerance",
+                      r / force_scale_, scene_.solve.residual_tolerance, full / longest_edge_);
+        throw Failure{std::string(why) + (inertia ? " (step " + std::to_string(step) + ")" : std::string())};
+      }
+      if (last_step_small && r <= force_tolerance) {  // converged: take the (tiny) step without a line search
+        if (options_.on_iteration)
+          options_.on_iteration(
+              {step, iteration, rung_name(rung), r / force_scale_, energy, full / longest_edge_, alpha});
         x_ += alpha * dx;
-        return;
+        break;
       }
       const double slope = gradient.dot(dx);              // < 0: a descent direction
       const double allowance = 1e-13 * std::abs(energy);  // rounding of the energy's evaluation
@@ -232,47 +288,176 @@ class Run {
           accepted = true;
           break;
         }
+        ++summary_.solver.halvings;
       }
       if (!accepted)
         throw Failure{"the line search found no decrease of the potential (Newton iteration " +
-                      std::to_string(iteration) + ")"};
+                      std::to_string(iteration) + (inertia ? " of step " + std::to_string(step) : std::string()) + ")"};
+      bool followed = false;
+      if (has_negative_) {  // then along the direction of negative curvature, doubling while the potential falls
+        double best = energy_at(trial, inertia), limit = 4096;
+        for (const auto& e : effects_) limit = std::min(limit, 4096 * e->max_step(trial, 4096 * negative_));
+        next = trial;
+        for (double beta = 1; beta <= limit; beta *= 2) {
+          const Eigen::VectorXd further = trial + beta * negative_;
+          const double e = energy_at(further, inertia);
+          if (!(e < best)) break;
+          best = e, next = further, followed = true;
+        }
+        trial = next;
+      }
+      if (options_.on_iteration)
+        options_.on_iteration(
+            {step, iteration, rung_name(rung), r / force_scale_, energy, full / longest_edge_, alpha, followed});
       x_ = trial;
       if (!x_.allFinite()) throw Failure{"a non-finite coordinate"};
     }
-    throw Failure{
-        "Newton did not converge in " + std::to_string(scene_.solve.max_newton) + " iterations" +
-        (scene_.solve.mode == Mode::dynamic ? " at step " + std::to_string(summary_.steps + 1) : std::string())};
+    per_step_.push_back(iterations);
   }
 
-  // Solves H d = b (b = -gradient) for a descent direction: if the factorization fails or d is not a
-  // descent direction (the exact treatment's indefinite Hessian), H + tau I with tau growing tenfold from
-  // 1e-8 times the largest diagonal entry; the next iteration starts from a quarter of the shift that
-  // worked (docs/simulator.md).
-  void solve_descent(const Eigen::VectorXd& b, Eigen::VectorXd& d) {
+  // F of the contract's stop rule: max_v (m_v |g| + |f_load,v|), or where that is 0 max_v m_v L / dt^2 (a
+  // time step) or Y h L (a static solve; k / L for a scene whose bending has k and no Young's modulus).
+  double force_scale(bool dynamic) const {
+    const Eigen::Index n = context_.mass.size() / 3;
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+    if (scene_.gravity)
+      f = Eigen::Vector3d(scene_.gravity->g.data()).norm() * context_.mass(Eigen::seq(0, Eigen::last, 3));
+    if (scene_.load)
+      for (Index v : scene_.load->vertices) f[v] += Eigen::Vector3d(scene_.load->force.data()).norm();
+    double scale = f.maxCoeff();
+    if (scale > 0) return scale;
+    if (dynamic) return context_.mass.maxCoeff() * longest_edge_ / (scene_.solve.dt * scene_.solve.dt);
+    scale = scene_.material.young * scene_.material.thickness * longest_edge_;
+    if (!(scale > 0) && scene_.bending) scale = scene_.bending->k / longest_edge_;
+    return scale;
+  }
+
+  static const char* rung_name(Rung rung) {
+    return rung == Rung::newton      ? "newton"
+           : rung == Rung::projected ? "projected"
+           : rung == Rung::shifted   ? "shifted"
+                                     : "gradient";
+  }
+
+  void count(Rung rung) {
+    auto& s = summary_.solver;
+    (rung == Rung::newton      ? s.newton
+     : rung == Rung::projected ? s.projected
+     : rung == Rung::shifted   ? s.shifted_rung
+                               : s.gradient)++;
+  }
+
+  // Factors A (the reduced matrix) and solves A d = b; false if A is not positive definite or d is not a
+  // descent direction (b = -gradient: b . d > 0).
+  // Its time is time_s.linear_solve.
+  bool factor_and_solve(const Eigen::VectorXd& b, Eigen::VectorXd& d, bool shifted) {
+    ++summary_.solver.factorizations;
+    if (shifted) ++summary_.solver.shifted;
+    const auto t = Clock::now();
+    const bool factored = solver_->factorize(reduction_->matrix());
+    if (factored) d = solver_->solve(b);
+    linear_time_ += seconds_since(t);
+    return factored && d.allFinite() && b.dot(d) > 0;
+  }
+
+  // The iteration's direction d (free coordinates) from the first rung of the fallback chain that gives a
+  // positive definite matrix: the scene's treatment as it is; every element's Hessian projected (with the
+  // exact treatment, also a direction of negative curvature of the true Hessian, which newton() follows
+  // after the line search: near a buckling saddle the projected step alone creeps); a shift tau D (D = M /
+  // dt^2 in a time step, the mean diagonal entry times I in a static solve; tau from 1e-3 growing tenfold
+  // to 1e6, starting a tenth below the step's last successful shift); the gradient step d = D^-1 b.
+  Rung descent(Evaluation& ev, const Inertia* inertia, const Eigen::VectorXd& b, Eigen::VectorXd& d) {
     auto& A = reduction_->matrix();
     if (b.size() == 0 || b.isZero(0.0)) {  // nothing free, or no force: the step is zero
       d.setZero(b.size());
-      return;
+      return Rung::newton;
     }
-    Eigen::VectorXd diagonal = A.diagonal();
-    const double scale = diagonal.cwiseAbs().maxCoeff();
-    if (!(scale > 0))
-      throw Failure{"the Hessian of the free coordinates is zero on its diagonal (an unconstrained scene?)"};
-    double tau = last_shift_ / 4;  // the last iteration's shift, lowered: one factorization, usually
-    if (tau < 1e-8 * scale) tau = 0;
-    for (int attempt = 0; attempt < 40; ++attempt) {
-      if (tau > 0)
-        for (Eigen::Index k = 0; k < A.rows(); ++k) A.coeffRef(k, k) = diagonal[k] + tau;
-      if (solver_->factorize(A)) {
-        d = solver_->solve(b);
-        if (d.allFinite() && b.dot(d) > 0) {
-          last_shift_ = tau;
-          return;
-        }
+    reduction_->reduce_matrix(ev.hessian);
+    if (factor_and_solve(b, d, false)) return keep_factored(Rung::newton);
+    // The scene's treatment already projects every element unless it is exact or gauss-newton.
+    has_negative_ = false;
+    if (scene_.solve.hessian != HessianTreatment::projected) {
+      const Eigen::SparseMatrix<double> H = A;  // the scene's Hessian, not positive definite
+      evaluate(x_, want_hessian, inertia, Treatment::projected);
+      reduction_->reduce_matrix(ev_.hessian);
+      if (factor_and_solve(b, d, false)) {
+        if (scene_.solve.hessian == HessianTreatment::exact) negative_curvature(H, A, b);
+        return keep_factored(Rung::projected);
       }
-      tau = tau == 0 ? 1e-8 * scale : tau * 10;
     }
-    throw Failure{"no descent direction: the shifted Hessian could not be factored"};
+    Eigen::VectorXd scale;
+    if (inertia) {
+      reduction_->reduce_vector(inertia->weight, scale);
+    } else {
+      const double mean = A.diagonal().cwiseAbs().mean();
+      scale = Eigen::VectorXd::Constant(A.rows(), mean > 0 ? mean : 1.0);
+    }
+    const Eigen::VectorXd diagonal = A.diagonal();
+    for (double tau = std::max(1e-3, shift_ / 10); tau <= 1e6; tau *= 10) {
+      for (Eigen::Index k = 0; k < A.rows(); ++k) A.coeffRef(k, k) = diagonal[k] + tau * scale[k];
+      if (factor_and_solve(b, d, true)) {
+        shift_ = tau;
+        return keep_factored(Rung::shifted);
+      }
+    }
+    d = b.cwiseQuotient(scale);
+    if (dumping_) factored_ = Eigen::SparseMatrix<double>(scale.asDiagonal()).triangularView<Eigen::Upper>();
+    return Rung::gradient;
+  }
+
+  // A direction of negative curvature of the scene's Hessian H (when the scene's treatment is exact, its
+  // true Hessian), from the factored projected matrix P >= H: P^-1 (P - H) has real eigenvalues mu >= 0,
+  // and v^T H v = (1 - mu) v^T P v < 0 for an eigenvector with mu > 1; a few steps of the power iteration
+  // find the largest. The direction is kept (negative_) with the sign that makes it a descent direction.
+  void negative_curvature(const Eigen::SparseMatrix<double>& H, const Eigen::SparseMatrix<double>& P,
+                          const Eigen::VectorXd& b) {
+    const Eigen::Index m = b.size();
+    Eigen::VectorXd v(m);
+    for (Eigen::Index i = 0; i < m; ++i) v[i] = std::sin(0.7 * static_cast<double>(i) + 0.3);  // fixed start
+    Eigen::VectorXd Pv, Hv;
+    const auto t = Clock::now();  // solves with the factor: linear solve time
+    for (int k = 0; k < 12; ++k) {
+      Pv = P.selfadjointView<Eigen::Upper>() * v;
+      Hv = H.selfadjointView<Eigen::Upper>() * v;
+      v = solver_->solve(Pv - Hv);
+      v /= v.norm();
+    }
+    linear_time_ += seconds_since(t);
+    Hv = H.selfadjointView<Eigen::Upper>() * v;
+    if (!(v.dot(Hv) < 0) || !v.allFinite()) return;
+    if (b.dot(v) < 0) v = -v;
+    reduction_->expand_vector(v, negative_);
+    negative_ *= 1e-3 * longest_edge_ / largest_displacement(negative_);
+    has_negative_ = true;
+  }
+
+  Rung keep_factored(Rung rung) {
+    if (dumping_) factored_ = reduction_->matrix();
+    return rung;
+  }
+
+  bool wants_dump(int step, int iteration) const {
+    return options_.on_dump &&
+           std::find(options_.dump.begin(), options_.dump.end(), std::pair(step, iteration)) != options_.dump.end();
+  }
+
+  // --dump-system: the true Hessian (every effect exact, with the inertia), the matrix factored, the
+  // gradient, the state; not counted in time_s.
+  void dump(int step, int iteration, const Inertia* inertia, const Eigen::VectorXd& gradient) {
+    const auto t = Clock::now();
+    SystemDump out;
+    out.step = step, out.iteration = iteration;
+    const std::vector<double> kept = ev_.hessian;
+    evaluate(x_, want_hessian, inertia, Treatment::exact);
+    reduction_->reduce_matrix(ev_.hessian);
+    out.hessian = reduction_->matrix();
+    ev_.hessian = kept;
+    out.factored = factored_;
+    reduction_->reduce_vector(gradient, out.gradient);
+    const Mesh state = state_mesh();
+    out.state = &state;
+    options_.on_dump(out);
+    output_time_ += seconds_since(t);
   }
 
   const Scene& scene_;
@@ -288,7 +473,13 @@ class Run {
   Eigen::VectorXd x_, v_, last_good_;
   Evaluation ev_;
   Summary summary_;
-  double last_shift_ = 0, longest_edge_ = 0, output_time_ = 0, linear_time_ = 0;
+  double force_scale_ = 1;  // F of the stop rule, for the step being solved
+  double shift_ = 0, longest_edge_ = 0, output_time_ = 0, linear_time_ = 0;
+  std::vector<int> per_step_;  // Newton iterations of each step
+  bool has_negative_ = false;  // this iteration found a direction of negative curvature
+  Eigen::VectorXd negative_;   // it, over all coordinates
+  bool dumping_ = false;       // keep a copy of the matrix factored (--dump-system)
+  Eigen::SparseMatrix<double> factored_;
 };
 
 }  // namespace

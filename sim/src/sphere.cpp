@@ -3,8 +3,10 @@
 //   kappa b(d),  b(d) = -(d - d_hat)^2 ln(d / d_hat) for 0 < d < d_hat,
 // and a step limit (max_step) that stops every Newton step short of the surface, so the barrier is never
 // crossed. d_hat = r / 100; kappa puts a force of ten times the heaviest vertex's weight at d = d_hat / 2
-// (docs/simulator.md). The barrier's Hessian kappa (b'' n n^T + b' (I - n n^T) / |x - c|) keeps its first,
-// positive part in every Hessian treatment (b' < 0: the second is negative semidefinite).
+// (docs/simulator.md). The barrier's Hessian is kappa (b'' n n^T + b' (I - n n^T) / |x - c|): b'' > 0 and
+// b' < 0 on (0, d_hat), so the second part is negative semidefinite; it is kept where the evaluation asks
+// for the true Hessian and dropped where it asks for a projected one (projects(), effect.hpp): kappa b'' n n^T
+// is exactly the projection of the 3 x 3.
 #include <cmath>
 
 #include "effects_internal.hpp"
@@ -17,7 +19,7 @@ class SphereEffect final : public Effect {
  public:
   SphereEffect(const Context& c, const Sphere& s)
       : center_(s.center[0], s.center[1], s.center[2]), radius_(s.radius), d_hat_(s.radius / 100),
-        slots_(c.topology->vertex_count), file_(c.scene->file) {
+        slots_(c.topology->vertex_count), file_(c.scene->file), treatment_(c.scene->solve.hessian) {
     double weight = 0, accel = 9.81;
     if (c.scene->gravity) accel = std::max(accel, Eigen::Vector3d(c.scene->gravity->g.data()).norm());
     for (Eigen::Index d = 0; d < c.mass.size(); ++d) weight = std::max(weight, c.mass[d]);
@@ -51,7 +53,9 @@ class SphereEffect final : public Effect {
       if (out.request & 1u) out.energy += kappa_ * b;
       if (out.request & 2u) out.gradient.segment<3>(3 * v) += kappa_ * b1 * n;
       if (out.request & 4u) {
-        const Eigen::Matrix3d h = kappa_ * b2 * n * n.transpose();
+        Eigen::Matrix3d h = kappa_ * b2 * n * n.transpose();
+        if (!projects(out.treatment, treatment_))
+          h += kappa_ * b1 / norm * (Eigen::Matrix3d::Identity() - n * n.transpose());
         scatter(std::span<const double>(h.data(), 9), slots_[static_cast<std::size_t>(v)], out.hessian);
       }
     }
@@ -76,6 +80,7 @@ class SphereEffect final : public Effect {
   double radius_, d_hat_, kappa_ = 0;
   std::vector<std::vector<Slot>> slots_;
   std::string file_;
+  HessianTreatment treatment_;
 };
 
 }  // namespace

@@ -3,9 +3,9 @@
 // x2 - x0] and D_m the rest edges in the rest triangle's own plane; plane stress lambda = Y nu / (1 - nu^2),
 // mu = Y / (2 (1 + nu)). Gradient h A P D_m^-T with P = F S, S = 2 mu E + lambda tr(E) I; the Hessian by
 // differentiating P along each of the six directions of D_s. StVK's Hessian is indefinite under
-// compression; it is used as it is (the scene's "hessian" option governs bending alone): where the total
-// Hessian is not positive definite, Newton's shift takes over (simulation.hpp). Each triangle's Hessian
-// projected instead makes Newton converge linearly where the cloth compresses (docs/simulator.md).
+// compression: it is used as it is where the evaluation asks for the true Hessian (the scene's "hessian":
+// "exact", and --dump-system), and each triangle's 9 x 9 is projected to positive semidefinite otherwise
+// (projects(), effect.hpp; docs/simulator.md).
 #include <Eigen/Geometry>
 #include <cmath>
 
@@ -26,7 +26,7 @@ struct Triangle {
 
 class StretchingEffect final : public Effect {
  public:
-  explicit StretchingEffect(const Context& c) {
+  explicit StretchingEffect(const Context& c) : treatment_(c.scene->solve.hessian) {
     const Material& m = c.scene->material;
     mu_ = m.young / (2 * (1 + m.poisson));
     lambda_ = m.young * m.poisson / (1 - m.poisson * m.poisson);
@@ -92,11 +92,13 @@ class StretchingEffect final : public Effect {
       h9.block<3, 3>(0, 3) = -(H11 + H21), h9.block<3, 3>(0, 6) = -(H12 + H22);
       h9.block<3, 3>(3, 0) = -(H11 + H12), h9.block<3, 3>(6, 0) = -(H21 + H22);
       h9.block<3, 3>(0, 0) = H11 + H12 + H21 + H22;
+      if (projects(out.treatment, treatment_)) project_to_psd<9>(h9);
       scatter(std::span<const double>(h9.data(), 81), slots_[t], out.hessian);
     }
   }
 
  private:
+  HessianTreatment treatment_;
   double mu_ = 0, lambda_ = 0, h_ = 0;
   std::vector<Triangle> triangles_;
   std::vector<std::vector<Slot>> slots_;

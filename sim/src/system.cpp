@@ -6,15 +6,24 @@
 
 namespace hinge::sim {
 
-Sparsity::Sparsity(const Topology& topology) {
+Sparsity::Sparsity(const Topology& topology, Couplings couplings) {
   const Eigen::Index n = static_cast<Eigen::Index>(topology.vertex_count);
+  if (!couplings.vertex_blocks && !couplings.faces && !couplings.hinges) {  // a diagonal matrix
+    structure_.resize(3 * n, 3 * n);
+    structure_.reserve(Eigen::VectorXi::Ones(3 * n));
+    for (Eigen::Index d = 0; d < 3 * n; ++d) structure_.insert(d, d) = 0.0;
+    structure_.makeCompressed();
+    return;
+  }
   std::vector<std::pair<Index, Index>> pairs;  // vertex pairs u <= v
   pairs.reserve(n + 6 * topology.faces.size() + topology.hinges.size());
   for (Index v = 0; v < n; ++v) pairs.emplace_back(v, v);
-  for (const auto& f : topology.faces)
-    for (int i = 0; i < 3; ++i)
-      for (int j = i + 1; j < 3; ++j) pairs.emplace_back(std::min(f[i], f[j]), std::max(f[i], f[j]));
-  for (const auto& h : topology.hinges) pairs.emplace_back(std::min(h.x[0], h.x[3]), std::max(h.x[0], h.x[3]));
+  if (couplings.faces)
+    for (const auto& f : topology.faces)
+      for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j) pairs.emplace_back(std::min(f[i], f[j]), std::max(f[i], f[j]));
+  if (couplings.hinges)
+    for (const auto& h : topology.hinges) pairs.emplace_back(std::min(h.x[0], h.x[3]), std::max(h.x[0], h.x[3]));
   std::sort(pairs.begin(), pairs.end(),
             [](auto a, auto b) { return std::pair(a.second, a.first) < std::pair(b.second, b.first); });
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
@@ -78,6 +87,11 @@ Reduction::Reduction(const Sparsity& sparsity, std::span<const Index> pinned_ver
       free_.push_back(d);
     }
   const auto& s = sparsity.structure();
+  identity_ = pinned_vertices.empty();
+  if (identity_) {
+    reduced_ = s;
+    return;
+  }
   target_.assign(static_cast<std::size_t>(s.nonZeros()), -1);
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index col = 0; col < size; ++col)
@@ -100,16 +114,28 @@ Reduction::Reduction(const Sparsity& sparsity, std::span<const Index> pinned_ver
 
 void Reduction::reduce_matrix(std::span<const double> values) {
   double* out = reduced_.valuePtr();
+  if (identity_) {
+    std::copy(values.begin(), values.end(), out);
+    return;
+  }
   for (std::size_t p = 0; p < target_.size(); ++p)
     if (target_[p] >= 0) out[target_[p]] = values[p];
 }
 
 void Reduction::reduce_vector(const Eigen::VectorXd& full, Eigen::VectorXd& free) const {
+  if (identity_) {
+    free = full;
+    return;
+  }
   free.resize(free_count());
   for (Eigen::Index i = 0; i < free_count(); ++i) free[i] = full[free_[static_cast<std::size_t>(i)]];
 }
 
 void Reduction::expand_vector(const Eigen::VectorXd& free, Eigen::VectorXd& full) const {
+  if (identity_) {
+    full = free;
+    return;
+  }
   full.setZero(static_cast<Eigen::Index>(index_.size()));
   for (Eigen::Index i = 0; i < free_count(); ++i) full[free_[static_cast<std::size_t>(i)]] = free[i];
 }

@@ -110,5 +110,36 @@ TEST(Scene, BadValuesAreErrorsNamingTheKey) {
   has(replaced(kValid, "\"t\",", "\"t\""), "not valid JSON");
 }
 
+// What `hinge simulate` writes as DIR/scene.json: read back from DIR (with DIR/rest.obj written there) it is
+// the same scene, every default filled in, the mesh's OBJ path relative to DIR.
+TEST(Scene, TheResolvedSceneReadsBackTheSameFromTheOutputFolder) {
+  const auto file = write_scene("resolved", "");
+  const auto folder = file.parent_path();
+  std::ofstream(folder / "quad.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+  std::ofstream(file) << R"({"scene": 1, "name": "r", "mesh": {"obj": "quad.obj", "velocity": [0, 0, -1]},
+ "material": {"density": 10, "young": 1e6, "poisson": 0.3, "thickness": 0.01},
+ "solve": {"mode": "dynamic", "dt": 0.01, "steps": 3, "residual_tolerance": 1e-9},
+ "effects": {"gravity": {"g": [0, 0, -9.81]}, "stretching": {"model": "stvk"}, "bending": {"energy": "tan"},
+             "damping": {"model": "viscous", "mass": 0.5}, "pins": {"vertices": [0]},
+             "sphere": {"center": [0, 0, -1], "radius": 0.5}, "load": {"vertices": [2], "force": [0, 1, 0]}}})";
+  const Scene s = read_scene(file.string());
+  const auto out = folder / "run" / "out";
+  std::filesystem::create_directories(out);
+  const std::string resolved = resolved_scene_json(s, out.string());
+  EXPECT_NE(resolved.find("\"../../quad.obj\""), std::string::npos) << resolved;
+  std::ofstream(out / "scene.json") << resolved;
+  std::ofstream(out / "rest.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+  const Scene t = read_scene((out / "scene.json").string());
+  EXPECT_EQ(resolved_scene_json(t, out.string()), resolved);
+  EXPECT_EQ(t.mesh.vertices, s.mesh.vertices);
+  EXPECT_EQ(t.bending->k, s.bending->k);  // eq. (11)'s value, written exactly
+  EXPECT_EQ(t.solve.residual_tolerance, 1e-9);
+  EXPECT_EQ(t.solve.newton_tolerance, 1e-9);  // the default, filled in
+  EXPECT_EQ(t.solve.max_newton, 100);
+  EXPECT_EQ(t.velocity, s.velocity);
+  EXPECT_EQ(t.damping->mass, 0.5);
+  EXPECT_EQ(t.load->vertices, s.load->vertices);
+}
+
 }  // namespace
 }  // namespace hinge::io

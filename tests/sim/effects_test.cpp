@@ -1,6 +1,7 @@
 // The effects' potentials: gradients and Hessians agree with finite differences at large bends (near-folded
 // hinges included); a rigid motion costs no stretching or bending energy; a curved rest shape (non-zero and
-// obtuse rest angles) is an equilibrium; the projected bending Hessian is positive semidefinite.
+// obtuse rest angles) is an equilibrium; the projected bending Hessian is positive semidefinite; the
+// membrane under uniaxial stress contracts by nu epsilon and carries Y h W epsilon (plane stress).
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -235,6 +236,38 @@ TEST(Effects, OtherMethodsGiveTheFastKernelsResultsToRounding) {
     EXPECT_LE((o.gradient - f.gradient).norm(), 1e3 * u * f.gradient.norm()) << method;
     EXPECT_LE((other.dense(o) - fast.dense(f)).norm(), 1e3 * u * fast.dense(f).norm()) << method;
   }
+}
+
+// A sheet of width W (along y) stretched along x by a small strain epsilon, free to contract along y:
+// plane-stress elasticity says its lateral strain is -nu epsilon and the force on its stretched edge Y h W
+// epsilon (the 3D Lame lambda in place of the plane-stress one would give -nu / (1 - nu) epsilon and more
+// force). The membrane's uniform strain state: the lateral strain that leaves the top edge without force.
+TEST(Effects, TheMembraneUnderUniaxialStressContractsByNuEpsilonAndCarriesYhWEpsilon) {
+  Scene s = test::cloth(5, 4, 0.4, 0.3);
+  s.material.poisson = 0.3;
+  s.stretching = Stretching{};
+  test::Effects fx(s);
+  const double epsilon = 1e-7, W = 0.3, Y = s.material.young, h = s.material.thickness, nu = s.material.poisson;
+  auto forces = [&](double lateral) {  // the gradient at x = diag(1 + epsilon, 1 + lateral, 1) X
+    Eigen::VectorXd x = test::coordinates(s.mesh);
+    for (Eigen::Index v = 0; v < x.size() / 3; ++v) x[3 * v] *= 1 + epsilon, x[3 * v + 1] *= 1 + lateral;
+    return fx.evaluate(x, 2).gradient;
+  };
+  auto edge_sum = [](const Eigen::VectorXd& g, int c, auto&& on_edge) {
+    double sum = 0;
+    for (Index v = 0; v < 20; ++v)
+      if (on_edge(v % 5, v / 5)) sum += g[3 * v + c];
+    return sum;
+  };
+  auto top = [](int, int j) { return j == 3; };
+  auto right = [](int i, int) { return i == 4; };
+  // The top edge's y force is affine in the lateral strain to O(epsilon^2): its root from two evaluations.
+  const double f0 = edge_sum(forces(0), 1, top), f1 = edge_sum(forces(-epsilon), 1, top);
+  const double lateral = -epsilon * f0 / (f0 - f1);
+  // Tolerance 1e-6 relative: the strain's nonlinearity is O(epsilon) = 1e-7 relative, and forming the Green
+  // strain F^T F - I at strain 1e-7 cancels to u / epsilon ~ 1e-9 relative.
+  EXPECT_NEAR(lateral / epsilon, -nu, 1e-6);
+  EXPECT_NEAR(edge_sum(forces(lateral), 0, right) / (Y * h * W * epsilon), 1.0, 1e-6);
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ def scene(**overrides):
     return s
 
 
-def simulate(s, *extra, out_exists=False, text=None):
+def simulate(s, *extra, out_exists=False, text=None, env=None):
     d = tempfile.mkdtemp(prefix="hinge-simulate-")
     path = os.path.join(d, "scene.json")
     with open(path, "w") as f:
@@ -37,7 +37,8 @@ def simulate(s, *extra, out_exists=False, text=None):
     if out_exists:
         os.makedirs(out)
         open(os.path.join(out, "summary.json"), "w").write("{}")
-    p = subprocess.run([HINGE, "simulate", path, "--out", out, "--quiet", *extra], capture_output=True, text=True)
+    p = subprocess.run([HINGE, "simulate", path, "--out", out, "--quiet", *extra], capture_output=True, text=True,
+                       env=env)
     return p, out
 
 
@@ -97,7 +98,9 @@ def test_threads_change_no_output_bit():
               solve={"mode": "dynamic", "dt": 0.01, "steps": 20, "hessian": "exact", "newton_tolerance": 1e-6},
               effects={"gravity": {"g": [0, 0, -9.81]}, "stretching": {"model": "stvk"},
                        "bending": {"energy": "tan"}, "sphere": {"center": [0, 0, 0], "radius": 0.25}})
-    (p1, out1), (p2, out2) = simulate(s, "--threads", "1"), simulate(s, "--threads", "2")
+    # OpenBLAS asked for two threads too: the program holds CHOLMOD's BLAS to one.
+    env2 = dict(os.environ, OPENBLAS_NUM_THREADS="2")
+    (p1, out1), (p2, out2) = simulate(s, "--threads", "1"), simulate(s, "--threads", "2", env=env2)
     assert p1.returncode == 0 and p2.returncode == 0, (p1.stderr, p2.stderr)
     for name in ["final.obj"] + ["frames/" + f for f in sorted(os.listdir(os.path.join(out1, "frames")))]:
         assert open(os.path.join(out1, name), "rb").read() == open(os.path.join(out2, name), "rb").read(), name
@@ -124,7 +127,63 @@ def test_summary_keys_in_the_contracts_order():
     p, out = simulate(scene())
     keys = list(json.load(open(os.path.join(out, "summary.json"))))
     assert keys == ["scene", "status", "effects", "vertices", "steps", "newton_iterations", "time_s", "energy",
-                    "bending_share", "build"], keys
+                    "bending_share", "solver", "build"], keys
+
+
+def test_the_solver_block_counts_every_newton_iteration_once():
+    s = scene(solve={"mode": "dynamic", "dt": 0.01, "steps": 6, "hessian": "exact"},
+              effects={"gravity": {"g": [0, 0, -9.81]}, "stretching": {"model": "stvk"}, "bending": {"energy": "tan"},
+                       "pins": {"vertices": [0, 5]}})
+    p, out = simulate(s)
+    assert p.returncode == 0, p.stderr
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    solver = summary["solver"]
+    assert list(solver) == ["factorizations", "shifted", "newton_per_step", "rungs", "halvings", "limited",
+                            "linear_solver"], solver
+    assert list(solver["rungs"]) == ["newton", "projected", "shifted", "gradient"], solver
+    assert sum(solver["rungs"].values()) == summary["newton_iterations"], solver
+    assert solver["factorizations"] >= summary["newton_iterations"] - solver["rungs"]["gradient"], solver
+    assert 1 <= solver["newton_per_step"]["median"] <= solver["newton_per_step"]["max"], solver
+
+
+def test_every_run_writes_its_resolved_scene_and_rest_shape_and_reruns_from_them():
+    s = scene(solve={"mode": "dynamic", "dt": 0.01, "steps": 4},
+              effects={"gravity": {"g": [0, 0, -9.81]}, "stretching": {"model": "stvk"}, "bending": {"energy": "tan"},
+                       "pins": {"vertices": [0, 5]}})
+    p, out = simulate(s)
+    assert p.returncode == 0, p.stderr
+    resolved = json.load(open(os.path.join(out, "scene.json")))
+    assert resolved["mesh"]["rest"] == {"obj": "rest.obj"}, resolved
+    assert resolved["solve"]["residual_tolerance"] == 1e-8 and resolved["solve"]["hessian"] == "projected", resolved
+    assert resolved["effects"]["bending"]["k"] > 0, resolved  # eq. (11)'s value, filled in
+    assert len(read_obj(os.path.join(out, "rest.obj"))) == 30
+    again = os.path.join(os.path.dirname(out), "again")
+    p = subprocess.run([HINGE, "simulate", os.path.join(out, "scene.json"), "--out", again, "--quiet"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    assert open(os.path.join(out, "final.obj"), "rb").read() == open(os.path.join(again, "final.obj"), "rb").read()
+
+
+def test_dump_system_writes_the_named_iterations_and_lists_those_that_never_occurred():
+    s = scene(solve={"mode": "dynamic", "dt": 0.01, "steps": 2, "hessian": "exact"},
+              effects={"gravity": {"g": [0, 0, -9.81]}, "stretching": {"model": "stvk"}, "bending": {"energy": "tan"},
+                       "pins": {"vertices": [0, 5]}})
+    p, out = simulate(s, "--dump-system", "1:1,2:1,7:3")
+    assert p.returncode == 2, (p.returncode, p.stderr)
+    assert "7:3" in p.stderr and "1:1" not in p.stderr, p.stderr
+    names = sorted(os.listdir(os.path.join(out, "system")))
+    assert names == ["1-1.g", "1-1.mtx", "1-1.obj", "1-1.solved.mtx", "2-1.g", "2-1.mtx", "2-1.obj", "2-1.solved.mtx"]
+    free = 3 * (30 - 2)
+    gradient = [float(line) for line in open(os.path.join(out, "system", "1-1.g"))]
+    assert len(gradient) == free
+    for name in ("1-1.mtx", "1-1.solved.mtx"):
+        lines = [line for line in open(os.path.join(out, "system", name)) if not line.startswith("%")]
+        assert lines[0].split()[:2] == [str(free), str(free)], (name, lines[0])
+    assert open(os.path.join(out, "system", "1-1.mtx")).readline().startswith("%%MatrixMarket matrix coordinate real symmetric")
+    assert json.load(open(os.path.join(out, "summary.json")))["status"] == "ok"
+    for bad in ("1", "1:0", "-1:2", "a:b", "1:2,"):
+        p, _ = simulate(s, "--dump-system", bad)
+        assert p.returncode == 2 and "--dump-system" in p.stderr, (bad, p.returncode, p.stderr)
 
 
 def test_a_scene_already_at_equilibrium_is_done_at_once():

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,10 +33,13 @@ enum class LinearSolver { cholmod, ldlt };
 
 struct Solve {
   Mode mode = Mode::static_equilibrium;
-  double dt = 0;                   // dynamic only
-  int steps = 0;                   // dynamic only
-  double newton_tolerance = 1e-9;  // times the longest rest edge: the largest vertex displacement of a
-                                   // Newton step below it ends the solve
+  double dt = 0;  // dynamic only
+  int steps = 0;  // dynamic only
+  // Newton's stop rule (docs/simulator.md, "When Newton stops"): the largest force residual on a free vertex
+  // at most residual_tolerance times the scene's force scale, and (on the newton and projected rungs) the
+  // step moving no vertex more than newton_tolerance times the longest rest edge.
+  double residual_tolerance = 1e-8;
+  double newton_tolerance = 1e-9;
   int max_newton = 100;
   HessianTreatment hessian = HessianTreatment::projected;
   LinearSolver linear_solver = LinearSolver::cholmod;
@@ -68,11 +72,21 @@ struct Load {
   Vec3 force{};
 };
 
+// The initial mesh's "grid" (the contract's grid mesh, hinge/core/samples.hpp).
+struct Grid {
+  int nx = 0, ny = 0;
+  double lx = 0, ly = 0;
+  Vec3 center{};
+  std::string plane;
+};
+
 struct Scene {
   std::string file;  // the scene file, for messages
   std::string name;
-  Mesh mesh;  // the initial state (from "obj" or "grid")
-  Mesh rest;  // the rest shape: "rest", else the initial mesh
+  std::string mesh_obj;      // the initial mesh's OBJ file (the scene's folder joined to "obj"), or
+  std::optional<Grid> grid;  // its grid
+  Mesh mesh;                 // the initial state (from "obj" or "grid")
+  Mesh rest;                 // the rest shape: "rest", else the initial mesh
   Vec3 velocity{};
   Material material;
   Solve solve;
@@ -89,5 +103,13 @@ struct Scene {
 // Reads and checks the scene file at `path`; its meshes are read relative to its folder (a grid is
 // hinge::grid_mesh of hinge/core/samples.hpp).
 Scene read_scene(const std::string& path);
+// The same from a stream: `name` for messages, meshes read relative to `folder`.
+Scene read_scene(std::istream& in, const std::string& name, const std::string& folder);
+
+// The scene as resolved (`hinge simulate` writes it as DIR/scene.json): a valid scene file with every
+// default filled in (bending's k as eq. (11) gave it), its initial mesh's OBJ path relative to `out_dir`
+// (a grid stays a grid), its rest shape {"obj": "rest.obj"} (the caller writes the rest shape there).
+// Read back from out_dir it gives the same scene.
+std::string resolved_scene_json(const Scene& scene, const std::string& out_dir);
 
 }  // namespace hinge::io

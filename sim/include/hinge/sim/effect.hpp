@@ -16,10 +16,18 @@
 
 namespace hinge::sim {
 
+// Which Hessian an evaluation asks for (docs/simulator.md, "Newton"): `scene`, each effect's Hessian as the
+// scene's "hessian" treats it (exact: every effect's true Hessian; projected and gauss-newton: bending as
+// named, each StVK triangle's and each sphere contact's Hessian projected to positive semidefinite);
+// `projected`, every element's Hessian projected (the fallback chain's second rung); `exact`, the true
+// Hessian of every effect (what --dump-system writes).
+enum class Treatment { scene, projected, exact };
+
 // What one evaluation of the potential adds to (request: want_energy | want_gradient |
 // want_hessian).
 struct Evaluation {
   unsigned request = 7;
+  Treatment treatment = Treatment::scene;
   double energy = 0;
   Eigen::VectorXd gradient;     // 3n
   std::vector<double> hessian;  // the Sparsity's values
@@ -59,5 +67,14 @@ class Effect {
 // sphere, load). Throws hinge::InputError for a rest shape an effect cannot take (degenerate triangles,
 // a rest hinge folded flat under the tan energy), naming the scene and the element.
 std::vector<std::unique_ptr<Effect>> make_effects(const Context& context);
+
+// The blocks of the Hessian the scene's named effects couple: the union of their stencils (a scene of
+// gravity, load and damping alone has a diagonal Hessian; the sphere adds each vertex's 3 x 3 block,
+// stretching every face's vertex pairs, bending those and each hinge's x0, x3).
+Couplings couplings(const Scene& scene);
+
+// Whether an element's Hessian is to be projected to positive semidefinite in an evaluation (Treatment):
+// the scene's treatment projects unless it is "exact"; `projected` always; `exact` never.
+bool projects(Treatment treatment, HessianTreatment scene);
 
 }  // namespace hinge::sim

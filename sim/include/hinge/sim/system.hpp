@@ -1,9 +1,11 @@
 // hinge/sim/system.hpp: the structure of Newton's linear systems. The Hessian of the total potential over
 // all 3n coordinates (global index 3 v + c, as everywhere in hinge) is kept as its upper triangle (row <=
-// col) in compressed columns, with a structure built once per mesh: every pair of vertices that share a
-// face, the two opposite vertices of every hinge, and every vertex with itself. Effects add into its
-// values through slots found once (element_slots). Pinned vertices' coordinates are removed from the
-// system, not penalized: Reduction maps the full matrix and gradient onto the free coordinates.
+// col) in compressed columns, with a structure built once per mesh from the stencils of the effects the
+// scene names (Couplings): the diagonal always (inertia, gravity, load and damping need no more), every
+// vertex's 3 x 3 block for the sphere, every pair of vertices that share a face for stretching and
+// bending, and the two opposite vertices of every hinge for bending. Effects add into its values through
+// slots found once (element_slots). Pinned vertices' coordinates are removed from the system, not
+// penalized: Reduction maps the full matrix and gradient onto the free coordinates (a copy without pins).
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -16,9 +18,16 @@ namespace hinge::sim {
 
 using Slot = std::ptrdiff_t;  // index into the values of the upper triangle; -1: none
 
+// Which blocks the named effects couple (effects.cpp: couplings(scene)).
+struct Couplings {
+  bool vertex_blocks = true;  // each vertex's 3 x 3 block (else its diagonal only)
+  bool faces = true;          // the vertex pairs of every face
+  bool hinges = true;         // the opposite vertices x0, x3 of every hinge
+};
+
 class Sparsity {
  public:
-  explicit Sparsity(const Topology& topology);
+  explicit Sparsity(const Topology& topology, Couplings couplings = {});
 
   // Zero values with the fixed structure, 3n x 3n, upper triangle.
   const Eigen::SparseMatrix<double>& structure() const { return structure_; }
@@ -42,6 +51,7 @@ void scatter(std::span<const double> local, std::span<const Slot> slots, std::sp
 // The free coordinates: those of vertices not pinned.
 class Reduction {
  public:
+  // Without pinned vertices the reduced system is the full one: reduce_* copy, expand_vector copies.
   Reduction(const Sparsity& sparsity, std::span<const Index> pinned_vertices);
   Eigen::Index free_count() const { return static_cast<Eigen::Index>(free_.size()); }
   bool is_free(Eigen::Index dof) const { return index_[static_cast<std::size_t>(dof)] >= 0; }
@@ -58,6 +68,7 @@ class Reduction {
   std::vector<Eigen::Index> index_;  // dof -> free index or -1
   std::vector<Eigen::Index> free_;   // free index -> dof
   std::vector<Slot> target_;         // full slot -> reduced slot or -1
+  bool identity_ = false;            // no pins
   Eigen::SparseMatrix<double> reduced_;
 };
 
