@@ -2,7 +2,8 @@
 """hinge view as a user meets it (docs/contract.md 6.3): a page from a dynamic run (one frame per frame file,
 final.obj added where it adds a state), from a static run (one frame), from a failed run (its frames and its
 status); a folder that is not a simulation's output and frames that do not fit: exit 1 naming the folder or
-the frame, no page left behind; usage errors: exit 2; nothing in the page points elsewhere.
+the frame, no page left behind; usage errors: exit 2; nothing in the page points elsewhere, and three.js's
+MIT notice is in it.
 
 Usage: test_command.py HINGE_BINARY
 """
@@ -61,6 +62,8 @@ def check_self_contained(html):
     """Nothing in the page loads from elsewhere: three.js and its controls removed (Debian's files, unchanged;
     their own namespace strings and licence comments are theirs), the rest names no resource at all."""
     assert "default-src 'none'" in html, "the page's Content-Security-Policy is missing"
+    assert "Copyright © 2010-2017 three.js authors" in html and "Permission is hereby granted" in html, \
+        "three.js's MIT notice is missing"
     rest = html
     for f in ("three.min.js", "examples/js/controls/OrbitControls.js"):
         text = (THREE / f).read_text()
