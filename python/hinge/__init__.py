@@ -10,10 +10,11 @@ docs/python.md has a worked example.
 from . import _hinge
 from .conformance import conform, conform_energy
 from .mesh_conformance import conform_mesh
+from .study import study
 
 Result = _hinge.Result
 
-__all__ = ["eval", "oracle", "hessian", "conform", "conform_energy", "conform_mesh", "Result"]
+__all__ = ["eval", "oracle", "hessian", "conform", "conform_energy", "conform_mesh", "study", "Result"]
 
 
 def eval(x, method="fast", scalar="double", faithful=False):  # noqa: A001 (the contract's name)

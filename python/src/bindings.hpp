@@ -22,5 +22,7 @@ decltype(auto) parsed(F&& f) {
 void bind_conformance(pybind11::module_& m);
 // The whole-mesh conformance's compiled part (mesh_conformance.cpp): certified mesh values and their comparison.
 void bind_mesh_conformance(pybind11::module_& m);
+// The study with Python callables as outside rows (study.cpp; built where hinge::study is).
+void bind_study(pybind11::module_& m);
 
 }  // namespace hinge::python

@@ -356,4 +356,7 @@ PYBIND11_MODULE(_hinge, m) {
         "report_precision"_a = false, "start_bits"_a = defaults.start_bits, "max_bits"_a = defaults.max_bits);
   hinge::python::bind_conformance(m);
   hinge::python::bind_mesh_conformance(m);
+#if HINGE_PYTHON_STUDY
+  hinge::python::bind_study(m);
+#endif
 }

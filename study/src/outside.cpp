@@ -10,6 +10,29 @@
 
 namespace hinge::study {
 
+OutsideTiming time_beside_fast(const std::function<double(const std::vector<std::array<double, 12>>&)>& pass,
+                               const std::vector<std::array<double, 12>>& hinges, int rounds) {
+  OutsideTiming t;
+  if (hinges.empty()) return t;
+  detail::Slots slots(hinges.size());
+  const auto fast_pass = [&] {
+    return detail::timed_pass(0, hinges.size(), hinges.size(), 1,
+                              [&](std::size_t i) { detail::fast_into(2, hinges[i], slots, i); });
+  };
+  for (int r = 0; r < rounds; ++r) {
+    double mine = 0, fast = 0;
+    if (r % 2) {
+      fast = fast_pass();
+      mine = pass(hinges);
+    } else {
+      mine = pass(hinges);
+      fast = fast_pass();
+    }
+    t.rounds.push_back({mine, fast});
+  }
+  return t;
+}
+
 Outside plugin_candidate(const std::string& path, const std::string& symbol, const std::string& label) {
   auto plugin = std::make_shared<conformance::Plugin>(path, symbol);
   Outside o;

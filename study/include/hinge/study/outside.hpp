@@ -30,6 +30,13 @@ struct Outside {
   std::function<OutsideTiming(const std::vector<std::array<double, 12>>&, int rounds)> time;
 };
 
+// `rounds` rounds of `pass(hinges)` (a candidate's pass over the hinges, ns per hinge, timed by the caller: a
+// Python callable on the whole batch) and a pass of fast in double over the same hinges into the caller's
+// arrays, back to back in this process, their order alternating: an Outside's `time` for candidates that run
+// in this process.
+OutsideTiming time_beside_fast(const std::function<double(const std::vector<std::array<double, 12>>&)>& pass,
+                               const std::vector<std::array<double, 12>>& hinges, int rounds);
+
 // A plugin's hinge_candidate (hinge/candidate.h; or `symbol`), loaded and called in a child process by
 // hinge::conformance::Plugin as `hinge conform --plugin` loads it: a crash or a time-out fails that hinge, or
 // the row's timing, not the study. Label: `label`, or the library's file name. Throws
