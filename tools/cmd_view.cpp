@@ -20,8 +20,9 @@ Action add_view(CLI::App& app) {
   cmd->add_option("folder", o->folder, "The output folder of hinge simulate")->required();
   cmd->add_option("--out", o->out, "The page to write (default: FOLDER/view.html)");
   cmd->footer(
-      "Exit: 0 done; 1 not a simulation's output folder, or frames that do not fit together (the message names\n"
-      "the folder or the frame; no page is left behind); 2 usage error.");
+      "Exit: 0 done; 1 not a simulation's output folder, nothing to show (a static run that failed), or frames\n"
+      "that do not fit together (the message names the folder or the frame; no page is left behind); 2 usage\n"
+      "error.");
   return [o]() {
     return run_mesh_command("view", [&] {
       const view::Run run = view::read_run(o->folder);
