@@ -28,13 +28,19 @@ Clock::time_point after(Clock::time_point t, double seconds) {
   return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
 }
 
+// A row in double named `method`, not measured yet.
+Measured double_row(const std::string& method) {
+  Measured m;
+  m.row.method = method;
+  m.row.scalar = double_type();
+  return m;
+}
+
 }  // namespace
 
 Measured measure_faithful(const Prepared& p, double budget, bool quick) {
-  Measured m;
+  Measured m = double_row("faithful");
   Row& row = m.row;
-  row.method = "faithful";
-  row.scalar = double_type();
   const auto start = Clock::now();
   measure_errors<double>(row, row.scalar, p, after(start, budget / 2), [&](std::size_t i) {
     const fast::HingeDerivatives<double> d = fast::faithful_hinge_derivatives(p.hinges[i].x);
@@ -55,10 +61,8 @@ Measured measure_faithful(const Prepared& p, double budget, bool quick) {
 }
 
 Measured measure_oracle(const Prepared& p, double budget, bool quick) {
-  Measured m;
+  Measured m = double_row("oracle");
   Row& row = m.row;
-  row.method = "oracle";
-  row.scalar = double_type();
   const auto start = Clock::now();
   std::map<std::string, std::pair<std::size_t, std::size_t>> escalated;  // per category: beyond the fast path, all
   measure_errors<double>(row, row.scalar, p, after(start, budget / 2), [&](std::size_t i) {
@@ -84,10 +88,8 @@ Measured measure_oracle(const Prepared& p, double budget, bool quick) {
 }
 
 Measured measure_outside(const Outside& o, const Prepared& p, double budget, bool quick) {
-  Measured m;
+  Measured m = double_row(o.label);
   Row& row = m.row;
-  row.method = o.label;
-  row.scalar = double_type();
   row.outside = true;
   const auto start = Clock::now();
   std::vector<std::array<double, 12>> xs;
