@@ -24,8 +24,9 @@ Couplings couplings(const Scene& s) {
   return c;
 }
 
-bool projects(Treatment treatment, HessianTreatment scene) {
-  return treatment == Treatment::projected || (treatment == Treatment::scene && scene != HessianTreatment::exact);
+bool projects(Treatment treatment, HessianTreatment scene, bool bending) {
+  return treatment == Treatment::projected ||
+         (treatment == Treatment::scene && bending && scene != HessianTreatment::exact);
 }
 
 namespace detail {

@@ -259,16 +259,17 @@ class Run {
       const bool newton_rung = rung == Rung::newton || rung == Rung::projected;
       const double full = largest_displacement(dx);
       last_step_small = !newton_rung || full <= step_tolerance;
-      // A residual that no longer falls while Newton's steps are below the tolerance is the rounding floor of
-      // the scene's forces: say so rather than iterate to max_newton.
+      // A residual that no longer falls while Newton's steps are below newton_tolerance: the rounding floor of
+      // the scene's forces (or a saddle Newton creeps towards); say so rather than iterate to max_newton.
       stalled =
           (newton_rung && full <= step_tolerance && r > force_tolerance && r >= 0.5 * last_residual) ? stalled + 1 : 0;
       last_residual = r;
       if (stalled >= 3) {
         char why[320];
         std::snprintf(why, sizeof why,
-                      "the force residual stalls at %.3g F (residual_tolerance %.3g) while Newton's steps are %.3g L: "
-                      "the rounding floor of this scene's forces; raise solve.residual_tolerance",
+                      "the force residual stalls at %.3g F (residual_tolerance %.3g) while Newton's steps are %.3g L, "
+                      "below newton_tolerance: the rounding floor of this scene's forces (raise "
+                      "solve.residual_tolerance) or a saddle of the potential",
                       r / force_scale_, scene_.solve.residual_tolerance, full / longest_edge_);
         throw Failure{std::string(why) + (inertia ? " (step " + std::to_string(step) + ")" : std::string())};
       }
@@ -361,8 +362,8 @@ class Run {
   }
 
   // The iteration's direction d (free coordinates) from the first rung of the fallback chain that gives a
-  // positive definite matrix: the scene's treatment as it is; every element's Hessian projected (with the
-  // exact treatment, also a direction of negative curvature of the true Hessian, which newton() follows
+  // positive definite matrix: the scene's treatment as it is; every element's Hessian projected (and, but
+  // with Gauss-Newton bending, a direction of negative curvature of the true Hessian, which newton() follows
   // after the line search: near a buckling saddle the projected step alone creeps); a shift tau D (D = M /
   // dt^2 in a time step, the mean diagonal entry times I in a static solve; tau from 1e-3 growing tenfold
   // to 1e6, starting a tenth below the step's last successful shift); the gradient step d = D^-1 b.
@@ -376,12 +377,13 @@ class Run {
     if (factor_and_solve(b, d, false)) return keep_factored(Rung::newton);
     // The scene's treatment already projects every element unless it is exact or gauss-newton.
     has_negative_ = false;
-    if (scene_.solve.hessian != HessianTreatment::projected) {
+    {
       const Eigen::SparseMatrix<double> H = A;  // the scene's Hessian, not positive definite
       evaluate(x_, want_hessian, inertia, Treatment::projected);
       reduction_->reduce_matrix(ev_.hessian);
       if (factor_and_solve(b, d, false)) {
-        if (scene_.solve.hessian == HessianTreatment::exact) negative_curvature(H, A, b);
+        // H >= the true Hessian but for the clamped Gauss-Newton bending: its negative curvature is the true one's.
+        if (scene_.solve.hessian != HessianTreatment::gauss_newton) negative_curvature(H, A, b);
         return keep_factored(Rung::projected);
       }
     }

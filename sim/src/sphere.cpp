@@ -4,9 +4,8 @@
 // and a step limit (max_step) that stops every Newton step short of the surface, so the barrier is never
 // crossed. d_hat = r / 100; kappa puts a force of ten times the heaviest vertex's weight at d = d_hat / 2
 // (docs/simulator.md). The barrier's Hessian is kappa (b'' n n^T + b' (I - n n^T) / |x - c|): b'' > 0 and
-// b' < 0 on (0, d_hat), so the second part is negative semidefinite; it is kept where the evaluation asks
-// for the true Hessian and dropped where it asks for a projected one (projects(), effect.hpp): kappa b'' n n^T
-// is exactly the projection of the 3 x 3.
+// b' < 0 on (0, d_hat), so the second part is negative semidefinite; it is kept but on the fallback chain's
+// projected rung (projects(), effect.hpp), where kappa b'' n n^T, exactly the projection of the 3 x 3, is.
 #include <cmath>
 
 #include "effects_internal.hpp"
@@ -54,7 +53,7 @@ class SphereEffect final : public Effect {
       if (out.request & 2u) out.gradient.segment<3>(3 * v) += kappa_ * b1 * n;
       if (out.request & 4u) {
         Eigen::Matrix3d h = kappa_ * b2 * n * n.transpose();
-        if (!projects(out.treatment, treatment_))
+        if (!projects(out.treatment, treatment_, false))
           h += kappa_ * b1 / norm * (Eigen::Matrix3d::Identity() - n * n.transpose());
         scatter(std::span<const double>(h.data(), 9), slots_[static_cast<std::size_t>(v)], out.hessian);
       }

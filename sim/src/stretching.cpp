@@ -3,9 +3,9 @@
 // x2 - x0] and D_m the rest edges in the rest triangle's own plane; plane stress lambda = Y nu / (1 - nu^2),
 // mu = Y / (2 (1 + nu)). Gradient h A P D_m^-T with P = F S, S = 2 mu E + lambda tr(E) I; the Hessian by
 // differentiating P along each of the six directions of D_s. StVK's Hessian is indefinite under
-// compression: it is used as it is where the evaluation asks for the true Hessian (the scene's "hessian":
-// "exact", and --dump-system), and each triangle's 9 x 9 is projected to positive semidefinite otherwise
-// (projects(), effect.hpp; docs/simulator.md).
+// compression: it is used as it is (the scene's "hessian" governs bending alone: each triangle projected
+// makes Newton converge only linearly where the cloth compresses, docs/simulator.md), and each triangle's
+// 9 x 9 is projected to positive semidefinite on the fallback chain's projected rung (projects(), effect.hpp).
 #include <Eigen/Geometry>
 #include <cmath>
 
@@ -92,7 +92,7 @@ class StretchingEffect final : public Effect {
       h9.block<3, 3>(0, 3) = -(H11 + H21), h9.block<3, 3>(0, 6) = -(H12 + H22);
       h9.block<3, 3>(3, 0) = -(H11 + H12), h9.block<3, 3>(6, 0) = -(H21 + H22);
       h9.block<3, 3>(0, 0) = H11 + H12 + H21 + H22;
-      if (projects(out.treatment, treatment_)) project_to_psd<9>(h9);
+      if (projects(out.treatment, treatment_, false)) project_to_psd<9>(h9);
       scatter(std::span<const double>(h9.data(), 81), slots_[t], out.hessian);
     }
   }

@@ -111,7 +111,7 @@ TEST(Effects, DampingDerivativesMatchFiniteDifferences) {
   }
 }
 
-TEST(Effects, SphereBarrierGradientMatchesFiniteDifferencesAndItsHessianIsPositiveSemidefinite) {
+TEST(Effects, SphereBarrierDerivativesMatchFiniteDifferencesAndItsProjectedHessianIsPositiveSemidefinite) {
   Scene s = test::cloth(3, 3, 0.02, 0.02, 0.5);
   s.sphere = Sphere{{0, 0, 0}, 0.497};  // every vertex within d_hat = r / 100 of the surface
   test::Effects fx(s);
@@ -119,14 +119,22 @@ TEST(Effects, SphereBarrierGradientMatchesFiniteDifferencesAndItsHessianIsPositi
   const Evaluation at = fx.evaluate(x);
   ASSERT_GT(at.energy, 0);
   const double h = std::cbrt(u) * 1e-3;  // u^(1/3) times the gap's scale (the barrier's length scale)
+  Eigen::MatrixXd H_fd(x.size(), x.size());
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     Eigen::VectorXd plus = x, minus = x;
     plus[i] += h, minus[i] -= h;
-    const double fd = (fx.evaluate(plus, 1).energy - fx.evaluate(minus, 1).energy) / (2 * h);
-    EXPECT_NEAR(fd, at.gradient[i], kFiniteDifferenceTolerance * at.gradient.norm()) << i;
+    const Evaluation ep = fx.evaluate(plus, 3), em = fx.evaluate(minus, 3);
+    EXPECT_NEAR((ep.energy - em.energy) / (2 * h), at.gradient[i], kFiniteDifferenceTolerance * at.gradient.norm())
+        << i;
+    H_fd.col(i) = (ep.gradient - em.gradient) / (2 * h);
   }
-  // The Hessian kept is kappa b'' n n^T per vertex: positive semidefinite (to the eigensolver's rounding).
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(fx.dense(at));
+  // The true Hessian kappa (b'' n n^T + b' (I - n n^T) / |x - c|), in the scene's treatment and the dump's.
+  for (auto treatment : {Treatment::scene, Treatment::exact}) {
+    const Eigen::MatrixXd H = fx.dense(fx.evaluate(x, 7, treatment));
+    EXPECT_LE((H_fd - H).norm(), kFiniteDifferenceTolerance * H.norm());
+  }
+  // The projected rung keeps kappa b'' n n^T per vertex: positive semidefinite (to the eigensolver's rounding).
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(fx.dense(fx.evaluate(x, 7, Treatment::projected)));
   EXPECT_GE(eig.eigenvalues().minCoeff(), -64 * u * eig.eigenvalues().maxCoeff());
 }
 

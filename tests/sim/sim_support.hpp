@@ -43,9 +43,10 @@ struct Effects {
     all = make_effects(context);
   }
   // The sum of every effect's part at x.
-  Evaluation evaluate(const Eigen::VectorXd& x, unsigned request = 7) {
+  Evaluation evaluate(const Eigen::VectorXd& x, unsigned request = 7, Treatment treatment = Treatment::scene) {
     Evaluation e;
     e.request = request;
+    e.treatment = treatment;
     e.gradient.setZero(x.size());
     e.hessian.assign(static_cast<std::size_t>(sparsity.nonzeros()), 0.0);
     for (auto& effect : all) effect->add(x, e);

@@ -16,11 +16,10 @@
 
 namespace hinge::sim {
 
-// Which Hessian an evaluation asks for (docs/simulator.md, "Newton"): `scene`, each effect's Hessian as the
-// scene's "hessian" treats it (exact: every effect's true Hessian; projected and gauss-newton: bending as
-// named, each StVK triangle's and each sphere contact's Hessian projected to positive semidefinite);
-// `projected`, every element's Hessian projected (the fallback chain's second rung); `exact`, the true
-// Hessian of every effect (what --dump-system writes).
+// Which Hessian an evaluation asks for (docs/simulator.md, "Newton"): `scene`, bending's as the scene's
+// "hessian" treats it and every other effect's true Hessian (the fallback chain's first rung); `projected`,
+// every element's Hessian (each hinge's, each StVK triangle's, each sphere contact's) projected to positive
+// semidefinite (its second rung); `exact`, the true Hessian of every effect (what --dump-system writes).
 enum class Treatment { scene, projected, exact };
 
 // What one evaluation of the potential adds to (request: want_energy | want_gradient |
@@ -73,8 +72,8 @@ std::vector<std::unique_ptr<Effect>> make_effects(const Context& context);
 // stretching every face's vertex pairs, bending those and each hinge's x0, x3).
 Couplings couplings(const Scene& scene);
 
-// Whether an element's Hessian is to be projected to positive semidefinite in an evaluation (Treatment):
-// the scene's treatment projects unless it is "exact"; `projected` always; `exact` never.
-bool projects(Treatment treatment, HessianTreatment scene);
+// Whether an element's Hessian is projected to positive semidefinite in an evaluation: always for
+// `projected`; for `scene`, a hinge's as the scene's "hessian" says (`bending` true) and no other element's.
+bool projects(Treatment treatment, HessianTreatment scene, bool bending);
 
 }  // namespace hinge::sim
