@@ -143,7 +143,7 @@ Action add_study(CLI::App& app) {
     for (const auto& m : split(o->methods))
       options.methods.push_back(study::check_method(m));  // invalid_argument: usage
     if (o->symbols.size() > o->plugins.size() || o->names.size() > o->plugins.size())
-      throw std::invalid_argument("--symbol and --name name the --plugin given before them: more than plugins given");
+      throw std::invalid_argument("the i-th --symbol and --name belong to the i-th --plugin: more given than plugins");
     for (std::size_t i = 0; i < o->plugins.size(); ++i) {
       try {
         options.outside.push_back(study::plugin_candidate(o->plugins[i],
