@@ -27,11 +27,11 @@ def lines(text):
 
 def test_version_names_the_contract():
     code, out, _ = run(["--version"])
-    assert code == 0 and "contract version 2" in out, out
+    assert code == 0 and "contract version 3" in out, out
 
 
 def test_every_command_has_help():
-    for cmd in ["eval", "oracle", "hessian", "conform", "study", "simulate", "demo"]:
+    for cmd in ["eval", "oracle", "hessian", "conform", "study", "simulate", "view", "demo"]:
         code, out, _ = run([cmd, "--help"])
         assert code == 0 and "--" in out, (cmd, code)
 
