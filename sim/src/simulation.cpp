@@ -369,14 +369,13 @@ class Run {
   // to 1e6, starting a tenth below the step's last successful shift); the gradient step d = D^-1 b.
   Rung descent(Evaluation& ev, const Inertia* inertia, const Eigen::VectorXd& b, Eigen::VectorXd& d) {
     auto& A = reduction_->matrix();
+    has_negative_ = false;
     if (b.size() == 0 || b.isZero(0.0)) {  // nothing free, or no force: the step is zero
       d.setZero(b.size());
       return Rung::newton;
     }
     reduction_->reduce_matrix(ev.hessian);
     if (factor_and_solve(b, d, false)) return keep_factored(Rung::newton);
-    // The scene's treatment already projects every element unless it is exact or gauss-newton.
-    has_negative_ = false;
     {
       const Eigen::SparseMatrix<double> H = A;  // the scene's Hessian, not positive definite
       evaluate(x_, want_hessian, inertia, Treatment::projected);
