@@ -52,7 +52,7 @@ class Run {
     solver_ = make_sparse_solver(scene.solve.linear_solver);
     solver_->analyze(reduction_->matrix());
     summary_.solver.linear_solver = solver_->name();
-    dumping_ = options.on_dump && !options.dump.empty();
+    force_scale_ = force_scale(scene.solve.mode == Mode::dynamic);
     x_.resize(static_cast<Eigen::Index>(3 * n));
     for (std::size_t v = 0; v < n; ++v)
       for (std::size_t c = 0; c < 3; ++c) x_[static_cast<Eigen::Index>(3 * v + c)] = scene.mesh.vertices[v][c];
@@ -218,7 +218,6 @@ class Run {
   // Newton with line search from x_ (docs/simulator.md, "Newton"); throws Failure.
   void newton(const Inertia* inertia) {
     const double step_tolerance = scene_.solve.newton_tolerance * longest_edge_;
-    force_scale_ = force_scale(inertia != nullptr);
     const double force_tolerance = scene_.solve.residual_tolerance * force_scale_;
     const int step = inertia ? summary_.steps + 1 : 0;
     Eigen::VectorXd b, d, dx, trial, next;
@@ -248,10 +247,11 @@ class Run {
       const Eigen::VectorXd gradient = ev.gradient;
       reduction_->reduce_vector(gradient, b);
       b = -b;
+      dumping_ = wants_dump(step, iteration);  // keep the matrix factored for this iteration's dump
       const Rung rung = descent(ev, inertia, b, d);
       reduction_->expand_vector(d, dx);
       count(rung);
-      if (wants_dump(step, iteration)) dump(step, iteration, inertia, gradient);
+      if (dumping_) dump(step, iteration, inertia, gradient);
       if (options_.on_progress && !inertia) options_.on_progress(iteration, scene_.solve.max_newton);
       double alpha = 1;
       for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
@@ -283,9 +283,11 @@ class Run {
       const double slope = gradient.dot(dx);              // < 0: a descent direction
       const double allowance = 1e-13 * std::abs(energy);  // rounding of the energy's evaluation
       bool accepted = false;
+      double accepted_energy = energy;
       for (int halvings = 0; halvings < 60; ++halvings, alpha /= 2) {
         trial = x_ + alpha * dx;
-        if (energy_at(trial, inertia) <= energy + 1e-4 * alpha * slope + allowance) {
+        accepted_energy = energy_at(trial, inertia);
+        if (accepted_energy <= energy + 1e-4 * alpha * slope + allowance) {
           accepted = true;
           break;
         }
@@ -296,7 +298,7 @@ class Run {
                       std::to_string(iteration) + (inertia ? " of step " + std::to_string(step) : std::string()) + ")"};
       bool followed = false;
       if (has_negative_) {  // then along the direction of negative curvature, doubling while the potential falls
-        double best = energy_at(trial, inertia), limit = 4096;
+        double best = accepted_energy, limit = 4096;
         for (const auto& e : effects_) limit = std::min(limit, 4096 * e->max_step(trial, 4096 * negative_));
         next = trial;
         for (double beta = 1; beta <= limit; beta *= 2) {
@@ -474,12 +476,12 @@ class Run {
   Eigen::VectorXd x_, v_, last_good_;
   Evaluation ev_;
   Summary summary_;
-  double force_scale_ = 1;  // F of the stop rule, for the step being solved
+  double force_scale_ = 1;  // F of the stop rule
   double shift_ = 0, longest_edge_ = 0, output_time_ = 0, linear_time_ = 0;
   std::vector<int> per_step_;  // Newton iterations of each step
   bool has_negative_ = false;  // this iteration found a direction of negative curvature
   Eigen::VectorXd negative_;   // it, over all coordinates
-  bool dumping_ = false;       // keep a copy of the matrix factored (--dump-system)
+  bool dumping_ = false;       // this iteration is dumped: keep a copy of the matrix factored
   Eigen::SparseMatrix<double> factored_;
 };
 
