@@ -99,7 +99,7 @@ Action add_simulate(CLI::App& app) {
   cmd->add_flag("--overwrite", o->overwrite, "Replace the outputs of an earlier run in --out");
   cmd->add_option("--newton-log", o->newton_log,
                   "Write FILE: one JSON line per Newton iteration (step, iteration, rung, residual / F, energy, "
-                  "step / L, alpha, negative_curvature): where a run's iterations go");
+                  "step / L, alpha, boundary): where a run's iterations go");
   cmd->add_option("--dump-system", o->dump,
                   "STEP:ITER[,STEP:ITER...]: write DIR/system/STEP-ITER.mtx (the true Hessian), .solved.mtx (the "
                   "matrix factored), .g (the gradient) and .obj (the state) of those Newton iterations (steps from "
@@ -163,7 +163,7 @@ Action add_simulate(CLI::App& app) {
                         << ", \"energy\": " << io::format_double(r.energy)
                         << ", \"step_length\": " << io::format_double(r.step_length)
                         << ", \"alpha\": " << io::format_double(r.alpha)
-                        << ", \"negative_curvature\": " << (r.negative_curvature ? "true" : "false") << "}\n";
+                        << ", \"boundary\": " << (r.boundary ? "true" : "false") << "}\n";
         };
       }
       Mesh last;

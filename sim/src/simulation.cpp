@@ -215,16 +215,18 @@ class Run {
   // The rungs of the fallback chain (summary.json's "rungs").
   enum class Rung { newton, projected, shifted, gradient };
 
-  // Newton with line search from x_ (docs/simulator.md, "Newton"); throws Failure.
+  // Newton from x_, a trust region on its newton and projected rungs (docs/simulator.md, "Newton"); throws
+  // Failure.
   void newton(const Inertia* inertia) {
     const double step_tolerance = scene_.solve.newton_tolerance * longest_edge_;
     const double force_tolerance = scene_.solve.residual_tolerance * force_scale_;
     const int step = inertia ? summary_.steps + 1 : 0;
-    Eigen::VectorXd b, d, dx, trial, next;
+    Eigen::VectorXd b, d, dx;
     bool last_step_small = false;  // the previous iteration's step would have let Newton stop
     int stalled = 0;               // iterations in a row whose tiny step left the residual where it was
     double last_residual = INFINITY;
-    shift_ = 0;  // the shift is found afresh in every step
+    shift_ = 0;   // the shift is found afresh in every step
+    radius_ = 0;  // and the trust region's radius
     int iterations = 0;
 
     for (int iteration = 1;; ++iteration) {
@@ -253,9 +255,6 @@ class Run {
       count(rung);
       if (dumping_) dump(step, iteration, inertia, gradient);
       if (options_.on_progress && !inertia) options_.on_progress(iteration, scene_.solve.max_newton);
-      double alpha = 1;
-      for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
-      if (alpha < 1) ++summary_.solver.limited;
       const bool newton_rung = rung == Rung::newton || rung == Rung::projected;
       const double full = largest_displacement(dx);
       last_step_small = !newton_rung || full <= step_tolerance;
@@ -273,46 +272,22 @@ class Run {
                       r / force_scale_, scene_.solve.residual_tolerance, full / longest_edge_);
         throw Failure{std::string(why) + (inertia ? " (step " + std::to_string(step) + ")" : std::string())};
       }
-      if (last_step_small && r <= force_tolerance) {  // converged: take the (tiny) step without a line search
-        if (options_.on_iteration)
-          options_.on_iteration(
-              {step, iteration, rung_name(rung), r / force_scale_, energy, full / longest_edge_, alpha});
+      IterationReport report{step, iteration, rung_name(rung), r / force_scale_, energy, full / longest_edge_};
+      if (last_step_small && r <= force_tolerance) {  // converged: take the (tiny) step as it is
+        double alpha = 1;
+        for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
         x_ += alpha * dx;
+        report.alpha = alpha;
+        if (options_.on_iteration) options_.on_iteration(report);
         break;
       }
-      const double slope = gradient.dot(dx);              // < 0: a descent direction
-      const double allowance = 1e-13 * std::abs(energy);  // rounding of the energy's evaluation
-      bool accepted = false;
-      double accepted_energy = energy;
-      for (int halvings = 0; halvings < 60; ++halvings, alpha /= 2) {
-        trial = x_ + alpha * dx;
-        accepted_energy = energy_at(trial, inertia);
-        if (accepted_energy <= energy + 1e-4 * alpha * slope + allowance) {
-          accepted = true;
-          break;
-        }
-        ++summary_.solver.halvings;
+      const Attempt where{inertia, step, iteration, energy};
+      if (newton_rung) {
+        last_step_small = trust_region(where, b, d, report) && last_step_small;
+      } else {
+        line_search(where, gradient, dx, report);
       }
-      if (!accepted)
-        throw Failure{"the line search found no decrease of the potential (Newton iteration " +
-                      std::to_string(iteration) + (inertia ? " of step " + std::to_string(step) : std::string()) + ")"};
-      bool followed = false;
-      if (has_negative_) {  // then along the direction of negative curvature, doubling while the potential falls
-        double best = accepted_energy, limit = 4096;
-        for (const auto& e : effects_) limit = std::min(limit, 4096 * e->max_step(trial, 4096 * negative_));
-        next = trial;
-        for (double beta = 1; beta <= limit; beta *= 2) {
-          const Eigen::VectorXd further = trial + beta * negative_;
-          const double e = energy_at(further, inertia);
-          if (!(e < best)) break;
-          best = e, next = further, followed = true;
-        }
-        trial = next;
-      }
-      if (options_.on_iteration)
-        options_.on_iteration(
-            {step, iteration, rung_name(rung), r / force_scale_, energy, full / longest_edge_, alpha, followed});
-      x_ = trial;
+      if (options_.on_iteration) options_.on_iteration(report);
       if (!x_.allFinite()) throw Failure{"a non-finite coordinate"};
     }
     per_step_.push_back(iterations);
@@ -364,30 +339,24 @@ class Run {
   }
 
   // The iteration's direction d (free coordinates) from the first rung of the fallback chain that gives a
-  // positive definite matrix: the scene's treatment as it is; every element's Hessian projected (and, but
-  // with Gauss-Newton bending, a direction of negative curvature of the true Hessian, which newton() follows
-  // after the line search: near a buckling saddle the projected step alone creeps); a shift tau D (D = M /
-  // dt^2 in a time step, the mean diagonal entry times I in a static solve; tau from 1e-3 growing tenfold
-  // to 1e6, starting a tenth below the step's last successful shift); the gradient step d = D^-1 b.
+  // positive definite matrix: the scene's treatment as it is; every element's Hessian projected (the scene's
+  // Hessian kept as model_, the projected matrix the trust region's preconditioner); a shift tau D (D = M /
+  // dt^2 in a time step, the mean diagonal entry times I in a static solve; tau from 1e-3 growing tenfold to
+  // 1e6, starting a tenth below the step's last successful shift); the gradient step d = D^-1 b.
   Rung descent(Evaluation& ev, const Inertia* inertia, const Eigen::VectorXd& b, Eigen::VectorXd& d) {
     auto& A = reduction_->matrix();
-    has_negative_ = false;
+    model_is_factored_ = true;
     if (b.size() == 0 || b.isZero(0.0)) {  // nothing free, or no force: the step is zero
       d.setZero(b.size());
       return Rung::newton;
     }
     reduction_->reduce_matrix(ev.hessian);
     if (factor_and_solve(b, d, false)) return keep_factored(Rung::newton);
-    {
-      const Eigen::SparseMatrix<double> H = A;  // the scene's Hessian, not positive definite
-      evaluate(x_, want_hessian, inertia, Treatment::projected);
-      reduction_->reduce_matrix(ev_.hessian);
-      if (factor_and_solve(b, d, false)) {
-        // H >= the true Hessian but for the clamped Gauss-Newton bending: its negative curvature is the true one's.
-        if (scene_.solve.hessian != HessianTreatment::gauss_newton) negative_curvature(H, A, b);
-        return keep_factored(Rung::projected);
-      }
-    }
+    model_ = A;  // the scene's Hessian, not positive definite
+    model_is_factored_ = false;
+    evaluate(x_, want_hessian, inertia, Treatment::projected);
+    reduction_->reduce_matrix(ev_.hessian);
+    if (factor_and_solve(b, d, false)) return keep_factored(Rung::projected);
     Eigen::VectorXd scale;
     if (inertia) {
       reduction_->reduce_vector(inertia->weight, scale);
@@ -408,30 +377,140 @@ class Run {
     return Rung::gradient;
   }
 
-  // A direction of negative curvature of the scene's Hessian H (when the scene's treatment is exact, its
-  // true Hessian), from the factored projected matrix P >= H: P^-1 (P - H) has real eigenvalues mu >= 0,
-  // and v^T H v = (1 - mu) v^T P v < 0 for an eigenvector with mu > 1; a few steps of the power iteration
-  // find the largest. The direction is kept (negative_) with the sign that makes it a descent direction.
-  void negative_curvature(const Eigen::SparseMatrix<double>& H, const Eigen::SparseMatrix<double>& P,
-                          const Eigen::VectorXd& b) {
-    const Eigen::Index m = b.size();
-    Eigen::VectorXd v(m);
-    for (Eigen::Index i = 0; i < m; ++i) v[i] = std::sin(0.7 * static_cast<double>(i) + 0.3);  // fixed start
-    Eigen::VectorXd Pv, Hv;
-    const auto t = Clock::now();  // solves with the factor: linear solve time
-    for (int k = 0; k < 12; ++k) {
-      Pv = P.selfadjointView<Eigen::Upper>() * v;
-      Hv = H.selfadjointView<Eigen::Upper>() * v;
-      v = solver_->solve(Pv - Hv);
-      v /= v.norm();
+  // Where a step is tried: the step's inertia, its number, the Newton iteration, the potential at x_.
+  struct Attempt {
+    const Inertia* inertia;
+    int step, iteration;
+    double energy;
+    std::string where() const {
+      return "Newton iteration " + std::to_string(iteration) +
+             (inertia ? " of step " + std::to_string(step) : std::string());
+    }
+  };
+
+  // The rounding of the potential's evaluation at a state whose potential is `energy`: decreases below it
+  // are not told apart from zero.
+  static double allowance(double energy) { return 1e-13 * std::abs(energy); }
+
+  // The newton and projected rungs' step: a trust region on the quadratic model of the potential whose
+  // Hessian is the scene's (model_; on the newton rung the matrix factored, P), the step z from Steihaug's
+  // truncated conjugate gradients preconditioned by P, the region measured in P's norm |z|_P = sqrt(z^T P z).
+  // On the newton rung the first iterate is Newton's step. On the projected rung P >= model_ but where
+  // elements were projected, so a few iterations solve the model where it is convex, and a direction of
+  // negative curvature of the scene's Hessian is followed to the boundary (near a buckling saddle a projected
+  // step alone creeps). rho, the potential's decrease over the model's, sets the radius: a step with rho <=
+  // 1e-4 is retried inside a quarter of it (counted in "halvings"), below 1/4 the next region is a quarter of
+  // the step; a step on the boundary with rho > 3/4 is tried again in a region twice as wide, and kept while
+  // the potential falls further (a radius cut too far grows back within the iteration, not over many).
+  // Each step is shortened by the effects' step limits. The radius starts every time step at the length of
+  // its first Newton step. Returns whether the step taken is the whole Newton step (the stop rule's
+  // condition); d = P^-1 b.
+  bool trust_region(const Attempt& at, const Eigen::VectorXd& b, const Eigen::VectorXd& d, IterationReport& report) {
+    const auto& P = reduction_->matrix();
+    const auto& H = model_is_factored_ ? P : model_;
+    Eigen::VectorXd z, dx, taken;
+    double taken_energy = at.energy;
+    bool have = false, whole = false;
+    const double tiny = allowance(at.energy);
+    if (!(radius_ > 0)) radius_ = std::sqrt(b.dot(d));  // |P^-1 b|_P
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      const bool interior = steihaug(H, b, d, z);
+      reduction_->expand_vector(z, dx);
+      double alpha = 1;
+      for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
+      z *= alpha, dx *= alpha;
+      const double predicted = b.dot(z) - 0.5 * z.dot(H.selfadjointView<Eigen::Upper>() * z);
+      Eigen::VectorXd trial = x_ + dx;
+      const double e = energy_at(trial, at.inertia), actual = at.energy - e;
+      const bool accept = predicted <= tiny ? actual >= -tiny : actual > 1e-4 * predicted;
+      const double rho = predicted <= tiny ? (accept ? 1 : -1) : actual / predicted;
+      const double norm = std::sqrt(std::max(0.0, z.dot(P.selfadjointView<Eigen::Upper>() * z)));
+      const bool widen = rho > 0.75 && !interior && alpha == 1;  // the model held to the boundary
+      if (have) {  // a step was taken: a wider region's step replaces it while the potential falls further
+        if (!(accept && e < taken_energy)) {
+          radius_ /= 2;
+          break;
+        }
+      } else if (!accept) {
+        radius_ = 0.25 * norm;
+        ++summary_.solver.halvings;
+        if (!(radius_ > 0)) break;
+        continue;
+      } else if (rho < 0.25) {
+        radius_ = 0.25 * norm;
+      }
+      taken = std::move(trial), taken_energy = e, have = true;
+      whole = interior && alpha == 1;
+      report.alpha = alpha, report.boundary = !interior;
+      if (alpha < 1) ++summary_.solver.limited;
+      if (!widen) break;
+      radius_ *= 2;
+    }
+    if (!have) throw Failure{"the trust region found no decrease of the potential (" + at.where() + ")"};
+    x_ = std::move(taken);
+    return whole;
+  }
+
+  // Steihaug's truncated conjugate gradients for min_z m(z) = -b^T z + z^T H z / 2 within |z|_P <= radius_,
+  // preconditioned by the factored P; d = P^-1 b, the first preconditioned residual. Returns whether it
+  // stopped inside the region (the residual's P^-1 norm 1e-8 times its start), not at its boundary along a
+  // direction of negative curvature or a step that would leave it. The P-norms by the recurrences of Conn,
+  // Gould and Toint (Trust-Region Methods, 2000, sec. 7.5.1).
+  bool steihaug(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& b, const Eigen::VectorXd& d,
+                Eigen::VectorXd& z) {
+    const auto t = Clock::now();  // the solves with P: linear solve time
+    z.setZero(b.size());
+    Eigen::VectorXd r = b, y = d, p = d, Hp;
+    double ry = r.dot(y);
+    const double ry0 = ry, radius2 = radius_ * radius_;
+    double zPz = 0, zPp = 0, pPp = ry;
+    bool interior = false;
+    for (int j = 0; j < 100; ++j) {
+      Hp = H.selfadjointView<Eigen::Upper>() * p;
+      const double kappa = p.dot(Hp), a = ry / kappa;
+      if (!(kappa > 0) || zPz + 2 * a * zPp + a * a * pPp > radius2) {  // to the boundary along p
+        const double tau = (-zPp + std::sqrt(std::max(0.0, zPp * zPp + pPp * (radius2 - zPz)))) / pPp;
+        z += tau * p;
+        break;
+      }
+      z += a * p;
+      zPz += 2 * a * zPp + a * a * pPp;
+      r -= a * Hp;
+      if (j > 0 || !model_is_factored_) y = solver_->solve(r);
+      else y.setZero(r.size());  // on the newton rung the first iterate is the solution
+      const double ry_next = r.dot(y);
+      if (!(ry_next > 1e-16 * ry0)) {
+        interior = true;
+        break;
+      }
+      const double beta = ry_next / ry;
+      ry = ry_next;
+      zPp = beta * (zPp + a * pPp);
+      pPp = ry + beta * beta * pPp;
+      p = y + beta * p;
     }
     linear_time_ += seconds_since(t);
-    Hv = H.selfadjointView<Eigen::Upper>() * v;
-    if (!(v.dot(Hv) < 0) || !v.allFinite()) return;
-    if (b.dot(v) < 0) v = -v;
-    reduction_->expand_vector(v, negative_);
-    negative_ *= 1e-3 * longest_edge_ / largest_displacement(negative_);
-    has_negative_ = true;
+    return interior;
+  }
+
+  // Backtracking along the shifted or gradient rung's step dx: halved until the potential falls by
+  // Armijo's sufficient decrease (1e-4 of the slope's promise), after the effects' step limits.
+  void line_search(const Attempt& at, const Eigen::VectorXd& gradient, const Eigen::VectorXd& dx,
+                   IterationReport& report) {
+    double alpha = 1;
+    for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
+    if (alpha < 1) ++summary_.solver.limited;
+    const double slope = gradient.dot(dx);  // < 0: a descent direction
+    for (int halvings = 0; halvings < 60; ++halvings, alpha /= 2) {
+      Eigen::VectorXd trial = x_ + alpha * dx;
+      if (energy_at(trial, at.inertia) <= at.energy + 1e-4 * alpha * slope + allowance(at.energy)) {
+        x_ = std::move(trial);
+        report.alpha = alpha;
+        return;
+      }
+      ++summary_.solver.halvings;
+    }
+    throw Failure{"the line search found no decrease of the potential (" + at.where() + ")"};
   }
 
   Rung keep_factored(Rung rung) {
@@ -478,9 +557,10 @@ class Run {
   Summary summary_;
   double force_scale_ = 1;  // F of the stop rule
   double shift_ = 0, longest_edge_ = 0, output_time_ = 0, linear_time_ = 0;
+  double radius_ = 0;                  // the trust region's radius in P's norm, reset every step
+  Eigen::SparseMatrix<double> model_;  // the scene's Hessian on the projected rung (the factored one's otherwise)
+  bool model_is_factored_ = true;
   std::vector<int> per_step_;  // Newton iterations of each step
-  bool has_negative_ = false;  // this iteration found a direction of negative curvature
-  Eigen::VectorXd negative_;   // it, over all coordinates
   bool dumping_ = false;       // this iteration is dumped: keep a copy of the matrix factored
   Eigen::SparseMatrix<double> factored_;
 };

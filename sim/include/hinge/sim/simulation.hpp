@@ -1,11 +1,11 @@
-// hinge/sim/simulation.hpp: running a scene. Static: Newton with a backtracking line search on the total
-// potential. Dynamic: backward Euler, v+ = v + dt M^-1 f(x+), x+ = x + dt v+, each step Newton on the
-// incremental potential  1/(2 dt^2) (x - x_hat)^T M (x - x_hat) + V(x) (+ damping's dissipation),
-// x_hat = x + dt v. Each Newton iteration takes its direction from the first rung of a fallback chain that
-// gives a positive definite matrix (the scene's treatment; every element's Hessian projected; a shift
-// scaled to the mass matrix; a gradient step), and Newton stops by the contract's rule: the largest force
-// residual on a free vertex at most residual_tolerance times the scene's force scale, and the last step of
-// the newton or projected rung below newton_tolerance times the longest rest edge (docs/simulator.md).
+// hinge/sim/simulation.hpp: running a scene. Static: Newton with a trust region on the total potential.
+// Dynamic: backward Euler, v+ = v + dt M^-1 f(x+), x+ = x + dt v+, each step Newton on the incremental
+// potential 1/(2 dt^2) (x - x_hat)^T M (x - x_hat) + V(x) (+ damping's dissipation), x_hat = x + dt v.
+// Each Newton iteration takes its direction from the first rung of a fallback chain that gives a positive
+// definite matrix (the scene's treatment; every element's Hessian projected; a shift scaled to the mass
+// matrix; a gradient step), and Newton stops by the contract's rule: the largest force residual on a free
+// vertex at most residual_tolerance times the scene's force scale, and the last step of the newton or
+// projected rung below newton_tolerance times the longest rest edge (docs/simulator.md).
 #pragma once
 
 #include <Eigen/Core>
@@ -35,13 +35,13 @@ struct SystemDump {
 
 // One Newton iteration, as it went (for --newton-log).
 struct IterationReport {
-  int step = 0, iteration = 0;      // as SystemDump's
-  const char* rung = "";            // "newton", "projected", "shifted" or "gradient"
-  double residual = 0;              // the largest force residual on a free vertex, over F (the stop rule's scale)
-  double energy = 0;                // the potential Newton minimizes, at the iteration's start
-  double step_length = 0;           // the largest vertex displacement of the full step, over L
-  double alpha = 1;                 // the fraction of it taken
-  bool negative_curvature = false;  // a direction of negative curvature was followed too
+  int step = 0, iteration = 0;  // as SystemDump's
+  const char* rung = "";        // "newton", "projected", "shifted" or "gradient"
+  double residual = 0;          // the largest force residual on a free vertex, over F (the stop rule's scale)
+  double energy = 0;            // the potential Newton minimizes, at the iteration's start
+  double step_length = 0;       // the largest vertex displacement of the rung's step (P^-1 b), over L
+  double alpha = 1;             // the fraction of the step tried that an effect's step limit allowed
+  bool boundary = false;        // the trust region's boundary cut the step (newton and projected rungs)
 };
 
 struct RunOptions {
