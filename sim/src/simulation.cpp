@@ -530,9 +530,11 @@ class Run {
     SystemDump out;
     out.step = step, out.iteration = iteration;
     const std::vector<double> kept = ev_.hessian;
+    Eigen::SparseMatrix<double> factored = reduction_->matrix();  // the trust region's norm: the run goes on with it
     evaluate(x_, want_hessian, inertia, Treatment::exact);
     reduction_->reduce_matrix(ev_.hessian);
     out.hessian = reduction_->matrix();
+    reduction_->matrix() = std::move(factored);
     ev_.hessian = kept;
     out.factored = factored_;
     reduction_->reduce_vector(gradient, out.gradient);
