@@ -442,11 +442,11 @@ class Run {
       taken = std::move(trial), taken_energy = e, have = true;
       whole = interior && alpha == 1;
       report.alpha = alpha, report.boundary = !interior;
-      if (alpha < 1) ++summary_.solver.limited;
       if (!widen) break;
       radius_ *= 2;
     }
     if (!have) throw Failure{"the trust region found no decrease of the potential (" + at.where() + ")"};
+    if (report.alpha < 1) ++summary_.solver.limited;
     x_ = std::move(taken);
     return whole;
   }

@@ -178,6 +178,7 @@ TEST(Newton, TheSolverReportAddsUp) {
   EXPECT_GE(r.factorizations, r.shifted);
   EXPECT_GE(static_cast<double>(r.newton_max), r.newton_median);
   EXPECT_LE(r.newton_max, summary.newton_iterations);
+  EXPECT_LE(r.limited, summary.newton_iterations);  // iterations, each counted once
   EXPECT_TRUE(r.linear_solver == "cholmod supernodal LL^T" || r.linear_solver == "cholmod simplicial LL^T");
 }
 
