@@ -427,7 +427,7 @@ class Run {
       const double norm = std::sqrt(std::max(0.0, z.dot(P.selfadjointView<Eigen::Upper>() * z)));
       const bool widen = rho > 0.75 && !interior && alpha == 1;  // the model held to the boundary
       if (have) {  // a step was taken: a wider region's step replaces it while the potential falls further
-        if (!(accept && e < taken_energy)) {
+        if (!(accept && e < taken_energy - tiny)) {
           radius_ /= 2;
           break;
         }
@@ -468,7 +468,7 @@ class Run {
     for (int j = 0; j < 100; ++j) {
       Hp = H.selfadjointView<Eigen::Upper>() * p;
       const double kappa = p.dot(Hp), a = ry / kappa;
-      if (!(kappa > 0) || zPz + 2 * a * zPp + a * a * pPp > radius2) {  // to the boundary along p
+      if (!(kappa > 0) || zPz + 2 * a * zPp + a * a * pPp > radius2 * (1 + 1e-9)) {  // to the boundary along p
         const double tau = (-zPp + std::sqrt(std::max(0.0, zPp * zPp + pPp * (radius2 - zPz)))) / pPp;
         z += tau * p;
         break;
