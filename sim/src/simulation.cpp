@@ -150,9 +150,7 @@ class Run {
     Eigen::VectorXd dx = inertia.target - start;
     for (Eigen::Index d = 0; d < x_.size(); ++d)
       if (!reduction_->is_free(d)) dx[d] = 0;
-    double alpha = 1;
-    for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(start, dx));
-    x_ = start + alpha * dx;
+    x_ = start + step_limit(start, dx) * dx;
     if (std::isinf(energy_at(x_, &inertia))) x_ = start;  // x_hat folds a hinge flat (tan): start from x_n
     newton(&inertia);
     v_ = (x_ - start) / scene_.solve.dt;
@@ -202,6 +200,14 @@ class Run {
     double m = 0;
     for (Eigen::Index v = 0; v < dx.size() / 3; ++v) m = std::max(m, dx.segment<3>(3 * v).norm());
     return m;
+  }
+
+  // The largest fraction of the step dx from x that every effect admits (the sphere: 0.8 of the way to its
+  // surface), in (0, 1].
+  double step_limit(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const {
+    double alpha = 1;
+    for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x, dx));
+    return alpha;
   }
 
   // The largest force residual on a free vertex: max_v |g_v| of the potential's gradient.
@@ -274,10 +280,8 @@ class Run {
       }
       IterationReport report{step, iteration, rung_name(rung), r / force_scale_, energy, full / longest_edge_};
       if (last_step_small && r <= force_tolerance) {  // converged: take the (tiny) step as it is
-        double alpha = 1;
-        for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
-        x_ += alpha * dx;
-        report.alpha = alpha;
+        report.alpha = step_limit(x_, dx);
+        x_ += report.alpha * dx;
         if (options_.on_iteration) options_.on_iteration(report);
         break;
       }
@@ -416,8 +420,7 @@ class Run {
     for (int attempt = 0; attempt < 100; ++attempt) {
       const bool interior = steihaug(H, b, d, z);
       reduction_->expand_vector(z, dx);
-      double alpha = 1;
-      for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
+      const double alpha = step_limit(x_, dx);
       z *= alpha, dx *= alpha;
       const double predicted = b.dot(z) - 0.5 * z.dot(H.selfadjointView<Eigen::Upper>() * z);
       Eigen::VectorXd trial = x_ + dx;
@@ -497,8 +500,7 @@ class Run {
   // Armijo's sufficient decrease (1e-4 of the slope's promise), after the effects' step limits.
   void line_search(const Attempt& at, const Eigen::VectorXd& gradient, const Eigen::VectorXd& dx,
                    IterationReport& report) {
-    double alpha = 1;
-    for (const auto& e : effects_) alpha = std::min(alpha, e->max_step(x_, dx));
+    double alpha = step_limit(x_, dx);
     if (alpha < 1) ++summary_.solver.limited;
     const double slope = gradient.dot(dx);  // < 0: a descent direction
     for (int halvings = 0; halvings < 60; ++halvings, alpha /= 2) {

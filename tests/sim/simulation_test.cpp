@@ -158,14 +158,21 @@ TEST(Simulation, APinnedClothComesToRestAtItsStaticEquilibriumAndStays) {
   }
 }
 
-TEST(Simulation, NoVertexEntersTheSphereAndThreadsChangeNoBit) {
-  Scene s = dynamic(test::cloth(11, 11, 1.0, 1.0, 0.3), 0.01, 40);
+// The shipped cloth-sphere scene at n x n vertices for `steps` steps: a 1 m cloth 0.05 m above a sphere of
+// radius 0.25 m, gravity, StVK, tan bending with the exact Hessian, newton_tolerance 1e-6.
+Scene cloth_over_sphere(int n, int steps) {
+  Scene s = dynamic(test::cloth(n, n, 1.0, 1.0, 0.3), 0.01, steps);
   s.gravity = Gravity{{0, 0, -9.81}};
   s.stretching = Stretching{};
   s.bending = Bending{Model::tan, test::stiffness(s.material)};
   s.sphere = Sphere{{0, 0, 0}, 0.25};
   s.solve.hessian = HessianTreatment::exact;
   s.solve.newton_tolerance = 1e-6;
+  return s;
+}
+
+TEST(Simulation, NoVertexEntersTheSphereAndThreadsChangeNoBit) {
+  const Scene s = cloth_over_sphere(11, 40);
   const Trajectory one = run(s, 1), two = run(s, 2);
   ASSERT_TRUE(one.summary.ok) << one.summary.reason;
   for (const auto& x : one.frames)
@@ -183,13 +190,8 @@ TEST(Simulation, NoVertexEntersTheSphereAndThreadsChangeNoBit) {
 // region's boundary or inside it) is a near-tie, the two runs take different paths and may end a buckling
 // step in different minima (docs/scenes.md, cloth-sphere).
 TEST(Simulation, TolerancesAThousandTimesTighterGiveTheSameDrapeWithinNewtonTolerance) {
-  Scene s = dynamic(test::cloth(15, 15, 1.0, 1.0, 0.3), 0.01, 60);
-  s.gravity = Gravity{{0, 0, -9.81}};
-  s.stretching = Stretching{};
-  s.bending = Bending{Model::tan, test::stiffness(s.material)};
-  s.sphere = Sphere{{0, 0, 0}, 0.25};
-  s.solve.hessian = HessianTreatment::exact;
-  s.solve.newton_tolerance = 1e-6, s.solve.residual_tolerance = 1e-6;
+  Scene s = cloth_over_sphere(15, 60);
+  s.solve.residual_tolerance = 1e-6;
   Scene tight = s;
   tight.solve.newton_tolerance = 1e-9, tight.solve.residual_tolerance = 1e-9;
   const Trajectory a = run(s), b = run(tight);
