@@ -422,12 +422,14 @@ class Run {
       reduction_->expand_vector(z, dx);
       const double alpha = step_limit(x_, dx);
       z *= alpha, dx *= alpha;
-      const double predicted = b.dot(z) - 0.5 * z.dot(H.selfadjointView<Eigen::Upper>() * z);
+      const Eigen::VectorXd Hz = H.selfadjointView<Eigen::Upper>() * z;
+      const double predicted = b.dot(z) - 0.5 * z.dot(Hz);
       Eigen::VectorXd trial = x_ + dx;
       const double e = energy_at(trial, at.inertia), actual = at.energy - e;
       const bool accept = predicted <= tiny ? actual >= -tiny : actual > 1e-4 * predicted;
       const double rho = predicted <= tiny ? (accept ? 1 : -1) : actual / predicted;
-      const double norm = std::sqrt(std::max(0.0, z.dot(P.selfadjointView<Eigen::Upper>() * z)));
+      const double zPz = model_is_factored_ ? z.dot(Hz) : z.dot(P.selfadjointView<Eigen::Upper>() * z);
+      const double norm = std::sqrt(std::max(0.0, zPz));
       const bool widen = rho > 0.75 && !interior && alpha == 1;  // the model held to the boundary
       if (have) {  // a step was taken: a wider region's step replaces it while the potential falls further
         if (!(accept && e < taken_energy - tiny)) {
