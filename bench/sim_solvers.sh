@@ -2,8 +2,8 @@
 # The cloth-sphere scene (scenes/cloth-sphere.json) at 21^2, 41^2 and 81^2 vertices: each run for 10 steps
 # (free fall, the cloth reaching the sphere's barrier), the matrix of step 10's first Newton iteration
 # dumped (--dump-system 10:1), then CHOLMOD alone (supernodal and simplicial) and Eigen's LDL^T timed on
-# the three matrices side by side by sim_solver_bench, beside the simulator's own linear solve per factorization in
-# the same runs (summary.json: time_s.linear_solve / solver.factorizations).
+# the three matrices side by side by sim_solver_bench, beside the simulator's own linear solve per
+# factorization in the same runs (summary.json: time_s.linear_solve / solver.factorizations).
 # Usage: bench/sim_solvers.sh [BUILD_DIR (default build/bench)]
 set -euo pipefail
 cd "$(dirname "$0")/.."

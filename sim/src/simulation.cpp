@@ -431,7 +431,9 @@ class Run {
       const double zPz = model_is_factored_ ? z.dot(Hz) : z.dot(P.selfadjointView<Eigen::Upper>() * z);
       const double norm = std::sqrt(std::max(0.0, zPz));
       const bool widen = rho > 0.75 && !interior && alpha == 1;  // the model held to the boundary
-      if (have) {  // a step was taken: a wider region's step replaces it while the potential falls further
+      // A step was taken: a wider region's step replaces it while the potential falls further, by more than its
+      // rounding (a tie decided by the last digits would send two nearly equal runs down different paths).
+      if (have) {
         if (!(accept && e < taken_energy - tiny)) {
           radius_ /= 2;
           break;
@@ -473,7 +475,9 @@ class Run {
     for (int j = 0; j < 100; ++j) {
       Hp = H.selfadjointView<Eigen::Upper>() * p;
       const double kappa = p.dot(Hp), a = ry / kappa;
-      if (!(kappa > 0) || zPz + 2 * a * zPp + a * a * pPp > radius2 * (1 + 1e-9)) {  // to the boundary along p
+      // To the boundary along p; beyond a relative slack of 1e-9, since the radius starts at the first step's
+      // length, which rounding would put on either side.
+      if (!(kappa > 0) || zPz + 2 * a * zPp + a * a * pPp > radius2 * (1 + 1e-9)) {
         const double tau = (-zPp + std::sqrt(std::max(0.0, zPp * zPp + pPp * (radius2 - zPz)))) / pPp;
         z += tau * p;
         break;
